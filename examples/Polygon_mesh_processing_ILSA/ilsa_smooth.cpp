@@ -1,0 +1,182 @@
+// ilsa_smooth: smooths a triangle mesh file with ILSA and reports the quality
+// before and after.
+//
+//   ilsa_smooth [INPUT [OUTPUT]] [options]
+//
+// With no INPUT, the bundled horse is smoothed. Every format that
+// CGAL::IO::read_polygon_mesh reads is accepted; OUTPUT keeps the vertex and
+// face order and is written with 17 significant digits, only on success.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+
+namespace {
+
+struct Options {
+  std::string input = std::string(ILSA_DATA_DIR) + "/horse.ply";
+  std::string output;
+  unsigned int iterations = 10, relaxation_steps = 3;
+  double relax1 = 0.5, relax2 = 0.5, mu = 0.1, wl = 1., wa = 1., feature_angle = 160.;
+  bool fix_unattached = true, project = true, safety = true, monotone = false, verbose = false;
+};
+
+const char* usage =
+    "usage: ilsa_smooth [INPUT [OUTPUT]] [options]\n"
+    "  --iterations N          global iterations (default 10)\n"
+    "  --relaxation-steps N    sweeps per iteration (default 3)\n"
+    "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
+    "  --relax2 X              penalty relaxation, (0,1] (default 0.5)\n"
+    "  --mu X                  penalty parameter, > 0 (default 0.1)\n"
+    "  --wl X                  length weight, >= 0 (default 1)\n"
+    "  --wa X                  area weight, >= 0 (default 1)\n"
+    "  --feature-angle DEG     dihedral feature angle, (0,180] (default 160)\n"
+    "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
+    "  --no-project            do not project back onto the input surface\n"
+    "  --no-safety             no inversion check after projection\n"
+    "  --quality-monotone      reject moves that lower the star's minimum quality\n"
+    "  --verbose               print what each iteration does\n";
+
+double parse_number(const std::string& flag, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size()) throw std::invalid_argument(flag + " expects a number, got '" + text + "'");
+  return value;
+}
+
+unsigned int parse_count(const std::string& flag, const std::string& text) {
+  const double value = parse_number(flag, text);
+  if (value < 0 || value > 1e6 || value != double((unsigned int)value))
+    throw std::invalid_argument(flag + " expects a non-negative whole number, got '" + text + "'");
+  return (unsigned int)value;
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  std::vector<std::string> positional;
+  std::map<std::string, std::function<void(const std::string&)>> valued{
+      {"--iterations", [&](const std::string& s) { o.iterations = parse_count("--iterations", s); }},
+      {"--relaxation-steps", [&](const std::string& s) { o.relaxation_steps = parse_count("--relaxation-steps", s); }},
+      {"--relax1", [&](const std::string& s) { o.relax1 = parse_number("--relax1", s); }},
+      {"--relax2", [&](const std::string& s) { o.relax2 = parse_number("--relax2", s); }},
+      {"--mu", [&](const std::string& s) { o.mu = parse_number("--mu", s); }},
+      {"--wl", [&](const std::string& s) { o.wl = parse_number("--wl", s); }},
+      {"--wa", [&](const std::string& s) { o.wa = parse_number("--wa", s); }},
+      {"--feature-angle", [&](const std::string& s) { o.feature_angle = parse_number("--feature-angle", s); }},
+      {"--fix-unattached", [&](const std::string& s) { o.fix_unattached = parse_count("--fix-unattached", s) != 0; }},
+  };
+  std::map<std::string, bool*> switches{{"--no-project", nullptr}, {"--no-safety", nullptr},
+                                        {"--quality-monotone", &o.monotone}, {"--verbose", &o.verbose}};
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      std::cout << usage;
+      std::exit(0);
+    }
+    if (valued.count(arg)) {
+      if (i + 1 >= argc) throw std::invalid_argument(arg + " expects a value");
+      valued[arg](argv[++i]);
+    } else if (arg == "--no-project") {
+      o.project = false;
+    } else if (arg == "--no-safety") {
+      o.safety = false;
+    } else if (switches.count(arg)) {
+      *switches[arg] = true;
+    } else if (arg.size() > 1 && arg[0] == '-') {
+      throw std::invalid_argument("unknown option '" + arg + "' (see --help)");
+    } else {
+      positional.push_back(arg);
+    }
+  }
+  if (positional.size() > 2) throw std::invalid_argument("too many file arguments (see --help)");
+  if (positional.size() > 0) o.input = positional[0];
+  if (positional.size() > 1) o.output = positional[1];
+  return o;
+}
+
+void print_quality(const char* label, const PMP::ILSA_quality_summary& q) {
+  std::cout << std::fixed << std::setprecision(4) << label << ": aspect ratio q min " << q.min_aspect_ratio << " mean "
+            << q.mean_aspect_ratio << ", q<0.3 " << std::setprecision(2) << 100. * q.share_below_threshold
+            << " %, min angle " << q.min_angle << " deg, degenerate faces " << q.number_of_degenerate_faces << "\n";
+}
+
+int run(const Options& o) {
+  Mesh mesh;
+  if (!CGAL::IO::read_polygon_mesh(o.input, mesh))
+    throw std::runtime_error("cannot read a polygon mesh from '" + o.input + "'");
+  if (num_faces(mesh) == 0) throw std::runtime_error("'" + o.input + "' has no faces");
+  std::cout << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces\n";
+  print_quality("before", PMP::mesh_quality_ilsa(mesh));
+
+  const auto start = std::chrono::steady_clock::now();
+  const PMP::ILSA_statistics s = PMP::smooth_surface_mesh_ilsa(
+      mesh, CGAL::parameters::number_of_iterations(o.iterations)
+                .number_of_relaxation_steps(o.relaxation_steps)
+                .ilsa_relaxation(o.relax1)
+                .ilsa_penalty_relaxation(o.relax2)
+                .ilsa_penalty_mu(o.mu)
+                .ilsa_length_weight(o.wl)
+                .ilsa_area_weight(o.wa)
+                .ilsa_feature_angle(o.feature_angle)
+                .ilsa_fix_unattached_candidates(o.fix_unattached)
+                .do_project(o.project)
+                .use_safety_constraints(o.safety)
+                .ilsa_quality_monotone(o.monotone)
+                .verbose(o.verbose));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  print_quality("after ", PMP::mesh_quality_ilsa(mesh));
+  std::cout << "vertices: " << s.number_of_smooth_vertices << " smooth, " << s.number_of_ridge_vertices << " ridge, "
+            << s.number_of_corner_vertices << " corner, " << s.number_of_boundary_vertices << " boundary\n"
+            << "moves: " << s.number_of_moves << " accepted, " << s.number_of_shortened_moves << " shortened, "
+            << s.number_of_rejected_moves << " rejected by the safety check\n"
+            << std::setprecision(3) << "time: " << seconds << " s for " << s.number_of_iterations << " iterations\n";
+
+  if (!o.output.empty()) {
+    // Write next to the target, then rename: a failed write leaves no partial file.
+    const std::string temporary = o.output + ".ilsa-partial";
+    if (!CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17))) {
+      std::remove(temporary.c_str());
+      throw std::runtime_error("cannot write '" + o.output + "'");
+    }
+    if (std::rename(temporary.c_str(), o.output.c_str()) != 0) {
+      std::remove(temporary.c_str());
+      throw std::runtime_error("cannot write '" + o.output + "'");
+    }
+    std::cout << "written: " << o.output << "\n";
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(parse(argc, argv));
+  } catch (const std::exception& e) {
+    std::cerr << "ilsa_smooth: error: " << e.what() << "\n";
+    return 1;
+  }
+}

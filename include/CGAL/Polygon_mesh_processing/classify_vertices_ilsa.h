@@ -1,0 +1,169 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_CLASSIFY_VERTICES_ILSA_H
+#define CGAL_POLYGON_MESH_PROCESSING_CLASSIFY_VERTICES_ILSA_H
+
+#include <CGAL/Named_function_parameters.h>
+#ifndef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE
+#error "CGAL's named-parameter list was included without the ILSA tags: put the package's include/ directory before CGAL's in the include path."
+#endif
+
+#include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+/// Default feature (dihedral) angle in degrees: the paper's 8π/9.
+constexpr double default_feature_angle = 160.;
+/// Default of the spec §1.4 rule: a ridge candidate with no sharp edge is fixed (paper).
+constexpr bool default_fix_unattached_candidates = true;
+
+/// Reads the classification parameters of `np` (spec §1, §1.5) into
+/// `options`; the user's constraint maps are copied into the flat arrays
+/// `vertex_store` and `edge_store`, which `options` points to.
+template <class TriangleMesh, class NamedParameters>
+Classification_options read_classification_parameters(
+    const TriangleMesh& tm, const NamedParameters& np,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list,
+    std::vector<unsigned char>& vertex_store, std::vector<unsigned char>& edge_store) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
+  CGAL_USE(tm);
+
+  Classification_options options;
+  options.feature_angle_degrees =
+      choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), default_feature_angle);
+  options.fix_unattached_candidates =
+      choose_parameter(get_parameter(np, internal_np::ilsa_fix_unattached_candidates), default_fix_unattached_candidates);
+  if (!(options.feature_angle_degrees > 0 && options.feature_angle_degrees <= 180))
+    throw ILSA_error("ilsa_feature_angle must be in (0, 180] degrees, got " + std::to_string(options.feature_angle_degrees));
+
+  const auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                                    Static_boolean_property_map<vertex_descriptor, false>());
+  vertex_store.resize(vertex_list.size());
+  for (std::size_t i = 0; i < vertex_list.size(); ++i) vertex_store[i] = get(vcm, vertex_list[i]) ? 1 : 0;
+  options.constrained_vertices = &vertex_store;
+
+  if (!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value) {
+    const auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
+                                      Static_boolean_property_map<edge_descriptor, false>());
+    edge_store.resize(edge_list.size());
+    for (std::size_t i = 0; i < edge_list.size(); ++i) edge_store[i] = get(ecm, edge_list[i]) ? 1 : 0;
+    options.constrained_edges = &edge_store;
+  }
+  return options;
+}
+
+inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
+  for (ILSA_vertex_type t : c.type) {
+    switch (t) {
+      case ILSA_vertex_type::Smooth: ++s.number_of_smooth_vertices; break;
+      case ILSA_vertex_type::Ridge: ++s.number_of_ridge_vertices; break;
+      case ILSA_vertex_type::Corner: ++s.number_of_corner_vertices; break;
+      case ILSA_vertex_type::Boundary: ++s.number_of_boundary_vertices; break;
+    }
+  }
+}
+
+} // namespace ILSA
+} // namespace internal
+
+/*!
+ * \ingroup PkgPMPILSARef
+ * classifies the vertices of a triangle mesh into the four ILSA types
+ * (Chen et al. 2007, Section 3): `Boundary` (endpoint of a border edge),
+ * `Corner` (fixed feature vertex), `Ridge` (on a crease, exactly two sharp
+ * edges) and `Smooth`. This is the classification `smooth_surface_mesh_ilsa()`
+ * uses with the same named parameters.
+ *
+ * A vertex is a ridge candidate when the least-squares normal `x` of its star
+ * (`A x = 1`, rows of `A` the unit normals of the incident faces) is longer
+ * than `1 / cos((180° − θ_f) / 2)`; an edge between two candidates whose
+ * dihedral angle is below `θ_f` is sharp; a candidate with two sharp edges is a
+ * ridge vertex, with one or more than two a corner, with none a corner or a
+ * smooth vertex (`ilsa_fix_unattached_candidates`). Isolated and non-manifold
+ * vertices are corners.
+ *
+ * @tparam TriangleMesh a model of `FaceListGraph` and `EdgeListGraph`, with hashable descriptors
+ * @tparam VertexTypeMap a model of `WritablePropertyMap` with `vertex_descriptor` as key and
+ *         `ILSA_vertex_type` as value
+ * @tparam NamedParameters a sequence of named parameters
+ *
+ * @param tm the triangle mesh
+ * @param vertex_type_map receives the type of every vertex
+ * @param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `%Point_3` as value}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_feature_angle}
+ *     \cgalParamDescription{the feature (dihedral) angle θ_f in degrees; an edge whose faces meet at a smaller dihedral angle is sharp}
+ *     \cgalParamType{`double`, in (0, 180]}
+ *     \cgalParamDefault{160 (the paper's 8π/9)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
+ *     \cgalParamDescription{whether a ridge candidate with no sharp edge is a corner (the paper's rule) or a smooth vertex}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_is_constrained_map}
+ *     \cgalParamDescription{a property map telling which vertices are fixed; they are reported as corners (boundary vertices stay boundary)}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool` as value}
+ *     \cgalParamDefault{no vertex is constrained}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{when given, these edges are the sharp edges, replacing the detection: a vertex with two constrained edges is a ridge vertex, with one or more than two a corner, with none a smooth vertex}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
+ *     \cgalParamDefault{sharp edges are detected}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * @return the number of vertices of each type (the other counters are zero)
+ * @throws ILSA_error for a non-triangle face, a non-finite coordinate or an out-of-range parameter
+ */
+template <class TriangleMesh, class VertexTypeMap, class NamedParameters = parameters::Default_named_parameters>
+ILSA_statistics classify_vertices_ilsa(const TriangleMesh& tm, VertexTypeMap vertex_type_map,
+                                       const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using GT = boost::graph_traits<TriangleMesh>;
+
+  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  std::vector<typename GT::vertex_descriptor> vertex_list;
+  internal::ILSA::Vertex_index_map<TriangleMesh> vertex_index;
+  std::vector<typename GT::edge_descriptor> edge_list;
+  const internal::ILSA::Flat_mesh m = internal::ILSA::build_flat_mesh(tm, vpm, vertex_list, vertex_index, edge_list);
+
+  std::vector<unsigned char> constrained_vertices, constrained_edges;
+  const auto options = internal::ILSA::read_classification_parameters(tm, np, vertex_list, edge_list,
+                                                                      constrained_vertices, constrained_edges);
+  const auto c = internal::ILSA::classify(m, options);
+  for (std::size_t i = 0; i < vertex_list.size(); ++i) put(vertex_type_map, vertex_list[i], c.type[i]);
+
+  ILSA_statistics s;
+  internal::ILSA::count_types(c, s);
+  return s;
+}
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

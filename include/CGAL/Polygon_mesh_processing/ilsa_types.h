@@ -1,0 +1,62 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_ILSA_TYPES_H
+#define CGAL_POLYGON_MESH_PROCESSING_ILSA_TYPES_H
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+/// \ingroup PkgPMPILSARef
+/// The four vertex types of ILSA (Chen et al. 2007, Section 3).
+/// Boundary and corner vertices are fixed; ridge and smooth vertices are adjustable.
+enum class ILSA_vertex_type : unsigned char {
+  Smooth = 0,  ///< interior vertex of a flat-enough star: moves on the surface
+  Ridge = 1,   ///< vertex on a crease line with exactly two sharp edges: moves along the crease
+  Corner = 2,  ///< crease junction, cone tip, non-manifold, isolated or user-constrained vertex: fixed
+  Boundary = 3 ///< endpoint of a border edge: fixed
+};
+
+/// Name of a vertex type ("smooth", "ridge", "corner", "boundary").
+inline const char* to_string(ILSA_vertex_type t) {
+  switch (t) {
+    case ILSA_vertex_type::Smooth: return "smooth";
+    case ILSA_vertex_type::Ridge: return "ridge";
+    case ILSA_vertex_type::Corner: return "corner";
+    case ILSA_vertex_type::Boundary: return "boundary";
+  }
+  return "unknown";
+}
+
+/// \ingroup PkgPMPILSARef
+/// Thrown by `smooth_surface_mesh_ilsa()` and `classify_vertices_ilsa()` when the
+/// input mesh cannot be processed (non-triangle face, non-finite coordinate,
+/// vertex that does not belong to the mesh) or a parameter is out of range.
+/// When it is thrown, the mesh has not been modified.
+class ILSA_error : public std::invalid_argument {
+public:
+  explicit ILSA_error(const std::string& what) : std::invalid_argument("ILSA: " + what) {}
+};
+
+/// \ingroup PkgPMPILSARef
+/// What a call of `smooth_surface_mesh_ilsa()` did.
+struct ILSA_statistics {
+  std::size_t number_of_smooth_vertices = 0;
+  std::size_t number_of_ridge_vertices = 0;
+  std::size_t number_of_corner_vertices = 0;
+  std::size_t number_of_boundary_vertices = 0;
+  std::size_t number_of_iterations = 0;   ///< global iterations run
+  std::size_t number_of_moves = 0;        ///< accepted vertex moves, summed over the iterations
+  std::size_t number_of_shortened_moves = 0; ///< moves accepted only after being shortened by the safety check
+  std::size_t number_of_rejected_moves = 0;  ///< moves dropped by the safety check
+  std::size_t number_of_guarded_projections = 0; ///< projections the sheet guard kept local
+};
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_ILSA_TYPES_H

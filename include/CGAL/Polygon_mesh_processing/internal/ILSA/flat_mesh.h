@@ -1,0 +1,189 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The flat, index-based copy of the input mesh on which every ILSA stage runs.
+// It is built once per call, in one place, so the sweeps never traverse the
+// graph or allocate. Coordinates are translated to the bounding-box centre and
+// divided by the bounding-box diagonal: every tolerance below is relative, and
+// a mesh moved by +1e7 or scaled by 1e-6 is smoothed the same way.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FLAT_MESH_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FLAT_MESH_H
+
+#include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <boost/unordered_map.hpp>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+using Vec3 = Eigen::Vector3d;
+constexpr std::size_t npos = (std::numeric_limits<std::size_t>::max)();
+
+/// Compressed adjacency: the items of element `i` are `items[begin[i]] .. items[begin[i+1]-1]`.
+struct Adjacency {
+  std::vector<std::size_t> begin{0};
+  std::vector<std::size_t> items;
+
+  std::size_t size(std::size_t i) const { return begin[i + 1] - begin[i]; }
+  const std::size_t* first(std::size_t i) const { return items.data() + begin[i]; }
+  const std::size_t* last(std::size_t i) const { return items.data() + begin[i + 1]; }
+
+  // Builds the adjacency of `n` elements from (element, item) pairs, keeping their order.
+  void assign(std::size_t n, const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
+    begin.assign(n + 1, 0);
+    for (const auto& p : pairs) ++begin[p.first + 1];
+    for (std::size_t i = 0; i < n; ++i) begin[i + 1] += begin[i];
+    items.resize(pairs.size());
+    std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
+    for (const auto& p : pairs) items[fill[p.first]++] = p.second;
+  }
+};
+
+struct Flat_mesh {
+  std::vector<Vec3> points;                           // normalised coordinates
+  std::vector<std::array<std::size_t, 3>> faces;      // vertex indices, mesh orientation
+  std::vector<std::array<std::size_t, 2>> edges;      // endpoints
+  std::vector<std::array<std::size_t, 2>> edge_faces; // incident faces, npos on a border
+  Adjacency vertex_faces;                             // faces around each vertex
+  Adjacency vertex_neighbors;                         // one-ring vertices
+  Adjacency vertex_edges;                             // edges around each vertex, same order as vertex_neighbors
+  std::vector<unsigned char> on_border;               // endpoint of a border edge
+  std::vector<unsigned char> non_manifold;            // vertex shared by several umbrellas
+  Vec3 center = Vec3::Zero();
+  double scale = 1.;
+
+  std::size_t number_of_vertices() const { return points.size(); }
+  std::size_t number_of_faces() const { return faces.size(); }
+
+  Vec3 to_input(const Vec3& p) const { return center + scale * p; }
+};
+
+/// Twice the area vector of triangle `f` for the positions `pos`.
+inline Vec3 area_vector(const std::vector<Vec3>& pos, const std::array<std::size_t, 3>& f) {
+  return (pos[f[1]] - pos[f[0]]).cross(pos[f[2]] - pos[f[0]]);
+}
+
+/// Unit normal of triangle `f`, or zero for a degenerate triangle.
+inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<std::size_t, 3>& f) {
+  const Vec3 n = area_vector(pos, f);
+  const double l = n.norm();
+  return l > 0 ? Vec3(n / l) : Vec3::Zero();
+}
+
+template <class TriangleMesh>
+using Vertex_index_map = boost::unordered_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, std::size_t>;
+
+/// Builds the flat copy of `tm`. `vertex_list` receives the vertex descriptors in
+/// index order, `vertex_index` the inverse map, `edge_list` the edge descriptors.
+/// Throws `ILSA_error` for a non-triangle face or a non-finite coordinate; `tm`
+/// is only read.
+template <class TriangleMesh, class VertexPointMap>
+Flat_mesh build_flat_mesh(
+    const TriangleMesh& tm, const VertexPointMap& vpm,
+    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
+    Vertex_index_map<TriangleMesh>& vertex_index,
+    std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list) {
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+
+  Flat_mesh m;
+  vertex_list.assign(vertices(tm).begin(), vertices(tm).end());
+  const std::size_t nv = vertex_list.size();
+
+  vertex_index.clear();
+  vertex_index.reserve(nv);
+  std::vector<Vec3> raw(nv);
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (std::size_t i = 0; i < nv; ++i) {
+    vertex_index.emplace(vertex_list[i], i);
+    const auto& p = get(vpm, vertex_list[i]);
+    raw[i] = Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    if (!raw[i].allFinite())
+      throw ILSA_error("vertex " + std::to_string(i) + " has a non-finite coordinate (NaN or infinity)");
+    lo = lo.cwiseMin(raw[i]);
+    hi = hi.cwiseMax(raw[i]);
+  }
+  if (nv > 0) {
+    m.center = 0.5 * (lo + hi);
+    const double diagonal = (hi - lo).norm();
+    m.scale = diagonal > 0 ? diagonal : 1.;
+  }
+  m.points.resize(nv);
+  for (std::size_t i = 0; i < nv; ++i) m.points[i] = (raw[i] - m.center) / m.scale;
+
+  boost::unordered_map<face_descriptor, std::size_t> face_index;
+  face_index.reserve(num_faces(tm));
+  std::vector<std::pair<std::size_t, std::size_t>> incidences;
+  for (face_descriptor f : faces(tm)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for (vertex_descriptor v : vertices_around_face(halfedge(f, tm), tm)) {
+      if (k < 3) t[k] = vertex_index.at(v);
+      ++k;
+    }
+    if (k != 3)
+      throw ILSA_error("face " + std::to_string(m.faces.size()) + " has " + std::to_string(k) +
+                       " vertices; only triangle meshes are supported (triangulate first)");
+    face_index.emplace(f, m.faces.size());
+    for (std::size_t c = 0; c < 3; ++c) incidences.emplace_back(t[c], m.faces.size());
+    m.faces.push_back(t);
+  }
+  m.vertex_faces.assign(nv, incidences);
+
+  incidences.clear();
+  std::vector<std::pair<std::size_t, std::size_t>> vertex_edge_pairs;
+  m.on_border.assign(nv, 0);
+  edge_list.assign(edges(tm).begin(), edges(tm).end());
+  for (const auto& e : edge_list) {
+    const auto h = halfedge(e, tm);
+    const std::size_t a = vertex_index.at(source(h, tm)), b = vertex_index.at(target(h, tm));
+    const face_descriptor f0 = face(h, tm), f1 = face(opposite(h, tm), tm);
+    const std::size_t i0 = f0 == GT::null_face() ? npos : face_index.at(f0);
+    const std::size_t i1 = f1 == GT::null_face() ? npos : face_index.at(f1);
+    if (i0 == npos || i1 == npos) m.on_border[a] = m.on_border[b] = 1;
+    const std::size_t ei = m.edges.size();
+    m.edges.push_back({a, b});
+    m.edge_faces.push_back({i0, i1});
+    incidences.emplace_back(a, b);
+    incidences.emplace_back(b, a);
+    vertex_edge_pairs.emplace_back(a, ei);
+    vertex_edge_pairs.emplace_back(b, ei);
+  }
+  m.vertex_neighbors.assign(nv, incidences);
+  m.vertex_edges.assign(nv, vertex_edge_pairs);
+
+  // A vertex whose faces do not all lie in one umbrella is non-manifold.
+  m.non_manifold.assign(nv, 0);
+  for (std::size_t i = 0; i < nv; ++i) {
+    if (m.vertex_faces.size(i) == 0) continue;
+    std::size_t umbrella = 0;
+    for (auto h : halfedges_around_target(halfedge(vertex_list[i], tm), tm))
+      if (face(h, tm) != GT::null_face()) ++umbrella;
+    if (umbrella != m.vertex_faces.size(i)) m.non_manifold[i] = 1;
+  }
+  return m;
+}
+
+} // namespace ILSA
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

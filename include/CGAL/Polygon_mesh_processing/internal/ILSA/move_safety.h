@@ -1,0 +1,149 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Safety check after projection (`use_safety_constraints`): no triangle may
+// reverse its orientation with respect to the original surface or collapse.
+// A vertex of an offending triangle has its move halved (and re-projected) a
+// few times, then dropped for this iteration. Since the moves are applied all
+// at once (Jacobi), the check is repeated until no triangle offends; it ends
+// because a triangle whose vertices are all back at their previous, accepted
+// positions is as it was.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_MOVE_SAFETY_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_MOVE_SAFETY_H
+
+#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+class Move_safety {
+public:
+  /// Relative area below which a triangle counts as collapsed: twice its area
+  /// under this fraction of its longest edge squared.
+  static constexpr double collapse_tolerance = 1e-6;
+
+  Move_safety(const Flat_mesh& original, bool quality_monotone, std::size_t halvings)
+      : m_(original), quality_monotone_(quality_monotone), halvings_(halvings) {
+    // Reference orientation of each face: its original normal, or for a face
+    // degenerate in the input the normals of its edge-adjacent faces.
+    reference_.resize(m_.number_of_faces());
+    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) reference_[f] = unit_normal(m_.points, m_.faces[f]);
+    std::vector<Vec3> from_neighbors(m_.number_of_faces(), Vec3::Zero());
+    for (const auto& fs : m_.edge_faces)
+      if (fs[0] != npos && fs[1] != npos) {
+        from_neighbors[fs[0]] += reference_[fs[1]];
+        from_neighbors[fs[1]] += reference_[fs[0]];
+      }
+    for (std::size_t f = 0; f < m_.number_of_faces(); ++f)
+      if (collapsed(m_.points, f)) reference_[f] = from_neighbors[f];
+    stamp_.assign(m_.number_of_faces(), 0);
+    tries_.assign(m_.number_of_vertices(), 0);
+  }
+
+  struct Counts {
+    std::size_t shortened = 0, rejected = 0;
+  };
+
+  /// `previous`: accepted positions (and homes) before this iteration;
+  /// `target`: the unprojected positions v + d; `next`/`next_home`: the
+  /// projected positions, corrected in place. `moved` lists the vertices whose
+  /// position changed. `project` re-projects a shortened move.
+  template <class Project>
+  Counts enforce(const std::vector<Vec3>& previous, const std::vector<std::size_t>& previous_home,
+                 const std::vector<Vec3>& target, const std::vector<std::size_t>& moved, std::vector<Vec3>& next,
+                 std::vector<std::size_t>& next_home, const Project& project) {
+    Counts counts;
+    for (std::size_t v : moved) tries_[v] = 0;
+    std::vector<std::size_t> offenders;
+    for (;;) {
+      offenders.clear();
+      ++round_;
+      // A vertex is shortened when any face around it offends, so every moved
+      // vertex of an offending face is.
+      for (std::size_t v : moved) {
+        if (tries_[v] > halvings_) continue; // already back at its previous position
+        bool bad = false;
+        for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v) && !bad; ++f)
+          bad = offends(previous, next, *f);
+        if (!bad && quality_monotone_) bad = star_quality(next, v) < star_quality(previous, v);
+        if (bad) offenders.push_back(v);
+      }
+      if (offenders.empty()) break;
+      for (std::size_t v : offenders) {
+        ++tries_[v];
+        if (tries_[v] <= halvings_) {
+          const double t = std::ldexp(1., -int(tries_[v]));
+          const auto r = project(v, previous[v] + t * (target[v] - previous[v]), previous[v], previous_home[v]);
+          next[v] = r.point;
+          next_home[v] = r.home;
+        } else {
+          next[v] = previous[v];
+          next_home[v] = previous_home[v];
+        }
+      }
+    }
+    for (std::size_t v : moved) {
+      if (tries_[v] > halvings_) ++counts.rejected;
+      else if (tries_[v] > 0) ++counts.shortened;
+    }
+    return counts;
+  }
+
+  /// Orientation of face `f` at positions `pos` against the original surface.
+  bool flipped(const std::vector<Vec3>& pos, std::size_t f) const {
+    return area_vector(pos, m_.faces[f]).dot(reference_[f]) <= 0;
+  }
+
+  bool collapsed(const std::vector<Vec3>& pos, std::size_t f) const {
+    const auto& t = m_.faces[f];
+    const double longest = (std::max)({(pos[t[1]] - pos[t[0]]).squaredNorm(), (pos[t[2]] - pos[t[1]]).squaredNorm(),
+                                       (pos[t[0]] - pos[t[2]]).squaredNorm()});
+    return area_vector(pos, t).norm() <= collapse_tolerance * longest || longest == 0;
+  }
+
+private:
+  // A face offends if it is flipped or collapsed now and was not before.
+  bool offends(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t f) {
+    if (stamp_[f] == round_) return true;
+    const bool was_bad = collapsed(previous, f) || flipped(previous, f);
+    const bool is_bad = collapsed(next, f) || flipped(next, f);
+    if (is_bad && !was_bad) {
+      stamp_[f] = round_;
+      return true;
+    }
+    return false;
+  }
+
+  double star_quality(const std::vector<Vec3>& pos, std::size_t v) const {
+    double q = 1.;
+    for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+      const auto& t = m_.faces[*f];
+      q = (std::min)(q, triangle_aspect_ratio(pos[t[0]], pos[t[1]], pos[t[2]]));
+    }
+    return q;
+  }
+
+  const Flat_mesh& m_;
+  bool quality_monotone_;
+  std::size_t halvings_;
+  std::vector<Vec3> reference_;
+  std::vector<std::size_t> stamp_; // round in which a face was found offending
+  std::vector<std::size_t> tries_; // halvings applied to a vertex's move
+  std::size_t round_ = 0;
+};
+
+} // namespace ILSA
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

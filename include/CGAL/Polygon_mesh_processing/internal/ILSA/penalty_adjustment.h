@@ -1,0 +1,124 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 3 of ILSA (spec §4, paper's Algo. 3): the displacement of every smooth
+// vertex is corrected toward the minimiser of the quadratic penalty function
+//   Q(x; μ) = g(x) + (1/μ) c(x)²,
+//   g(x)    = wl (1/n) Σ_j |x − p_j|² + wa Σ_j β_j s(x, p_j, p_j+1)²,
+// a "soap film" that keeps the star taut and so non-inverted.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PENALTY_ADJUSTMENT_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PENALTY_ADJUSTMENT_H
+
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+struct Penalty_parameters {
+  double relax2 = 0.5;         // ilsa_penalty_relaxation
+  double mu = 0.1;             // ilsa_penalty_mu
+  double length_weight = 1.;   // wl
+  double area_weight = 1.;     // wa
+  std::size_t sweeps = 3;      // number_of_relaxation_steps
+  double tolerance = 0;        // stop once no displacement changes by more
+};
+
+struct Penalty_workspace {
+  std::vector<Vec3> next;          // Jacobi target buffer
+  std::vector<double> beta;        // β = 1 / s(v, v_j, v_j+1), per face of the current mesh
+};
+
+/// Plane of the soft constraint c(x) = 0 (spec §4), as `a · (x − v) = k` with
+/// unit `a`. With no displacement yet it is the tangent plane at `v`; otherwise
+/// the plane through `v + d` perpendicular to `d`. The paper's second form,
+/// `d · (x − v) − |d|²`, is this one multiplied by `|d|`: normalising it gives
+/// c the unit of a length in both cases, so μ is scale-free.
+inline std::pair<Vec3, double> penalty_plane(const Vec3& d, const Vec3& vertex_normal) {
+  const double length = d.norm();
+  if (length > 0) return {d / length, length};
+  return {vertex_normal, 0.};
+}
+
+/// Minimiser of Q(x; μ) for the smooth vertex `v`, relative to `pos[v]`.
+/// Every term is quadratic in x, so ∇Q = 0 is the 3x3 system H x = r.
+inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3>& pos,
+                                      const std::vector<Vec3>& d, const std::vector<double>& beta,
+                                      const Vec3& vertex_normal, std::size_t v, const Penalty_parameters& p) {
+  const Vec3& x0 = pos[v];
+  auto pending = [&](std::size_t w) -> Vec3 { return pos[w] + d[w] - x0; };
+
+  // Length term: ∇ = 2 wl (x − mean p_j).
+  Eigen::Matrix3d H = 2. * p.length_weight * Eigen::Matrix3d::Identity();
+  Vec3 mean = Vec3::Zero();
+  for (const std::size_t* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w) mean += pending(*w);
+  Vec3 r = (2. * p.length_weight / double(m.vertex_neighbors.size(v))) * mean;
+
+  // Area term: 2 s(x, a, b) = |e × x + a × b| with e = b − a, so
+  // ∇ (β s²) = (β/2) (|e|² I − e eᵀ) x + (β/2) (a × b) × e.
+  for (const std::size_t* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) {
+    const auto& t = m.faces[*f];
+    const std::size_t k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+    const Vec3 a = pending(t[(k + 1) % 3]), b = pending(t[(k + 2) % 3]);
+    const Vec3 e = b - a;
+    const double w = 0.5 * p.area_weight * beta[*f];
+    H += w * (e.squaredNorm() * Eigen::Matrix3d::Identity() - e * e.transpose());
+    r += w * e.cross(a.cross(b));
+  }
+
+  // Penalty term (1/μ) (a·x − k)².
+  const auto plane = penalty_plane(d[v], vertex_normal);
+  H += (2. / p.mu) * plane.first * plane.first.transpose();
+  r += (2. / p.mu) * plane.second * plane.first;
+
+  return solve_by_svd(H, r, 1e-12);
+}
+
+/// Algo. 3 on the smooth vertices of `nb`; `d` holds Algo. 2's displacements on
+/// entry and the adjusted ones on exit. Returns the number of sweeps run.
+inline std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
+                                                  const std::vector<Vec3>& vertex_normals,
+                                                  const Ilsa_neighborhoods& nb, const Penalty_parameters& p,
+                                                  std::vector<Vec3>& d, Penalty_workspace& ws) {
+  // β_j from the current faces; a floor at 1e-3 of the mean area keeps a
+  // degenerate face from swamping the star.
+  ws.beta.resize(m.number_of_faces());
+  double mean_area = 0;
+  for (std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    ws.beta[f] = 0.5 * area_vector(pos, m.faces[f]).norm();
+    mean_area += ws.beta[f];
+  }
+  mean_area /= double((std::max)(m.number_of_faces(), std::size_t(1)));
+  const double smallest_area = (std::max)(1e-3 * mean_area, 1e-300);
+  for (double& b : ws.beta) b = 1. / (std::max)(b, smallest_area);
+
+  ws.next = d;
+  std::size_t sweep = 0;
+  while (sweep < p.sweeps) {
+    ++sweep;
+    double largest_change = 0;
+    for (std::size_t v : nb.smooth) {
+      const Vec3 d_new = minimize_penalty_function(m, pos, d, ws.beta, vertex_normals[v], v, p);
+      ws.next[v] = p.relax2 * d_new + (1. - p.relax2) * d[v];
+      largest_change = (std::max)(largest_change, (ws.next[v] - d[v]).norm());
+    }
+    std::swap(d, ws.next); // entries the sweep does not write are equal in both buffers
+    if (largest_change <= p.tolerance) break;
+  }
+  return sweep;
+}
+
+} // namespace ILSA
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,157 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 4 of ILSA (spec §5): projection of the moved vertices back onto the
+// frozen original mesh. Smooth vertices go to the closest point of the
+// original surface (AABB tree over its faces), ridge vertices to the closest
+// point of their own crease polyline (AABB tree over the sharp edges).
+//
+// Sheet guard: every vertex remembers the original face (or sharp edge) it lies
+// on, its "home". A closest point is accepted only if it lies on a face sharing
+// a vertex with the home face (on a sharp edge of the same crease sharing an
+// endpoint with the home edge). Otherwise the AABB answer belongs to another
+// sheet (thin plate, parallel sheets, the other side of a slot) or another
+// crease, and the vertex is projected onto that neighbourhood instead, so it
+// can only travel across the surface, never through space.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
+
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+class Projector {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Point = K::Point_3;
+  using Triangle = K::Triangle_3;
+  using Segment = K::Segment_3;
+  using Triangle_iterator = std::vector<Triangle>::const_iterator;
+  using Segment_iterator = std::vector<Segment>::const_iterator;
+  using Face_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangle_iterator>>>;
+  using Crease_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segment_iterator>>>;
+
+public:
+  struct Result {
+    Vec3 point;
+    std::size_t home; // face (smooth vertex) or sharp edge (ridge vertex) the point lies on
+    bool guarded;     // the AABB answer was rejected by the sheet guard
+  };
+
+  /// `original` and `classification` must outlive the projector: it keeps references.
+  Projector(const Flat_mesh& original, const Vertex_classification& classification)
+      : m_(original), c_(classification) {
+    triangles_.reserve(m_.number_of_faces());
+    for (const auto& f : m_.faces) triangles_.emplace_back(point(m_.points[f[0]]), point(m_.points[f[1]]), point(m_.points[f[2]]));
+    if (!triangles_.empty()) face_tree_.rebuild(triangles_.cbegin(), triangles_.cend());
+
+    edge_to_segment_.assign(m_.edges.size(), npos);
+    for (std::size_t e = 0; e < m_.edges.size(); ++e) {
+      if (c_.crease_of_edge[e] == npos) continue;
+      edge_to_segment_[e] = segments_.size();
+      segment_edge_.push_back(e);
+      segments_.emplace_back(point(m_.points[m_.edges[e][0]]), point(m_.points[m_.edges[e][1]]));
+    }
+    if (!segments_.empty()) crease_tree_.rebuild(segments_.cbegin(), segments_.cend());
+  }
+
+  /// Home of vertex `v` of the original mesh: an incident face, or for a ridge
+  /// vertex one of its two sharp edges.
+  std::size_t initial_home(std::size_t v) const {
+    if (c_.type[v] == ILSA_vertex_type::Ridge) return c_.attached_edges[v][0];
+    return m_.vertex_faces.size(v) > 0 ? *m_.vertex_faces.first(v) : npos;
+  }
+
+  /// Closest point to `q` for vertex `v` whose current position `current` lies on `home`.
+  Result project(std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) const {
+    return c_.type[v] == ILSA_vertex_type::Ridge ? project_on_crease(q, current, home)
+                                                 : project_on_surface(q, current, home);
+  }
+
+private:
+  static Point point(const Vec3& p) { return Point(p.x(), p.y(), p.z()); }
+  static Vec3 vec(const Point& p) { return Vec3(p.x(), p.y(), p.z()); }
+
+  // Faces sharing a vertex with face `home`.
+  template <class F>
+  void for_each_face_near(std::size_t home, F f) const {
+    for (std::size_t w : m_.faces[home])
+      for (const std::size_t* g = m_.vertex_faces.first(w); g != m_.vertex_faces.last(w); ++g) f(*g);
+  }
+
+  // Sharp edges of the same crease sharing an endpoint with edge `home`.
+  template <class F>
+  void for_each_crease_edge_near(std::size_t home, F f) const {
+    for (std::size_t w : m_.edges[home])
+      for (const std::size_t* e = m_.vertex_edges.first(w); e != m_.vertex_edges.last(w); ++e)
+        if (c_.crease_of_edge[*e] == c_.crease_of_edge[home]) f(*e);
+  }
+
+  Result project_on_surface(const Vec3& q, const Vec3& current, std::size_t home) const {
+    const Point query = point(q);
+    const auto hint = std::make_pair(point(current), triangles_.cbegin() + std::ptrdiff_t(home));
+    const auto found = face_tree_.closest_point_and_primitive(query, hint);
+    const std::size_t f = std::size_t(found.second - triangles_.cbegin());
+    bool near = false;
+    for_each_face_near(home, [&](std::size_t g) { near = near || g == f; });
+    if (near) return {vec(found.first), f, false};
+
+    Result best{current, home, true};
+    double best_distance = (q - current).squaredNorm();
+    K::Construct_projected_point_3 closest;
+    for_each_face_near(home, [&](std::size_t g) {
+      const Vec3 p = vec(closest(triangles_[g], query));
+      const double distance = (q - p).squaredNorm();
+      if (distance < best_distance) best = {p, g, true}, best_distance = distance;
+    });
+    return best;
+  }
+
+  Result project_on_crease(const Vec3& q, const Vec3& current, std::size_t home) const {
+    const Point query = point(q);
+    const auto hint = std::make_pair(point(current), segments_.cbegin() + std::ptrdiff_t(edge_to_segment_[home]));
+    const auto found = crease_tree_.closest_point_and_primitive(query, hint);
+    const std::size_t e = segment_edge_[std::size_t(found.second - segments_.cbegin())];
+    bool near = false;
+    for_each_crease_edge_near(home, [&](std::size_t g) { near = near || g == e; });
+    if (near) return {vec(found.first), e, false};
+
+    Result best{current, home, true};
+    double best_distance = (q - current).squaredNorm();
+    K::Construct_projected_point_3 closest;
+    for_each_crease_edge_near(home, [&](std::size_t g) {
+      const Vec3 p = vec(closest(segments_[edge_to_segment_[g]], query));
+      const double distance = (q - p).squaredNorm();
+      if (distance < best_distance) best = {p, g, true}, best_distance = distance;
+    });
+    return best;
+  }
+
+  const Flat_mesh& m_;
+  const Vertex_classification& c_;
+  std::vector<Triangle> triangles_;
+  std::vector<Segment> segments_;
+  std::vector<std::size_t> segment_edge_;    // segment -> edge
+  std::vector<std::size_t> edge_to_segment_; // edge -> segment, npos if not sharp
+  Face_tree face_tree_;
+  Crease_tree crease_tree_;
+};
+
+} // namespace ILSA
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

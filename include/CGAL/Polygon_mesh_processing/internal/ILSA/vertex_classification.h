@@ -1,0 +1,157 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 1 of ILSA (spec §1): discrete normals by least squares, ridge
+// candidates, sharp edges, attached-sharp nodes and the four vertex types.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_VERTEX_CLASSIFICATION_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_VERTEX_CLASSIFICATION_H
+
+#include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
+
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+/// Discrete normal `x` of vertex `v` (spec §1.2): least-squares solution of
+/// `A x = 1`, the rows of `A` being the unit normals of the faces around `v`.
+/// Solved through the normal equations `AᵀA x = Aᵀ1` with the SVD; a relative
+/// threshold of 1e-12 on the singular values of `AᵀA` (1e-6 on those of `A`)
+/// makes a flat star rank 1, giving `x = n` and `|x| = 1`.
+/// `face_normals` holds the unit normal of every face (zero when degenerate).
+inline Vec3 discrete_normal(const Flat_mesh& m, const std::vector<Vec3>& face_normals, std::size_t v) {
+  Eigen::Matrix3d AtA = Eigen::Matrix3d::Zero();
+  Vec3 At1 = Vec3::Zero();
+  for (const std::size_t* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) {
+    const Vec3& n = face_normals[*f];
+    AtA += n * n.transpose();
+    At1 += n;
+  }
+  if (At1.isZero(0)) return Vec3::Zero();
+  return solve_by_svd(AtA, At1, 1e-12);
+}
+
+/// Unit normals of all faces for the positions `pos`.
+inline void compute_face_normals(const Flat_mesh& m, const std::vector<Vec3>& pos, std::vector<Vec3>& normals) {
+  normals.resize(m.number_of_faces());
+  for (std::size_t f = 0; f < m.number_of_faces(); ++f) normals[f] = unit_normal(pos, m.faces[f]);
+}
+
+/// What the classification stage hands to the smoothing stages.
+struct Vertex_classification {
+  std::vector<ILSA_vertex_type> type;
+  std::vector<unsigned char> ridge_candidate;             // |x| above the feature threshold
+  std::vector<unsigned char> sharp_edge;                  // per edge (spec §1.3 or the user's edge map)
+  std::vector<std::size_t> crease_of_edge;                // crease polyline of a sharp edge, npos otherwise
+  std::vector<std::array<std::size_t, 2>> attached_sharp; // a ridge vertex's two attached-sharp nodes
+  std::vector<std::array<std::size_t, 2>> attached_edges; // and the two sharp edges leading to them
+
+  bool is_fixed(std::size_t v) const {
+    return type[v] == ILSA_vertex_type::Corner || type[v] == ILSA_vertex_type::Boundary;
+  }
+};
+
+struct Classification_options {
+  double feature_angle_degrees = 160.;     // dihedral angle θ_f below which an edge is sharp
+  bool fix_unattached_candidates = true;   // spec §1.4: candidate without sharp edge is a corner (paper) or smooth
+  const std::vector<unsigned char>* constrained_vertices = nullptr; // user's vertex_is_constrained_map
+  const std::vector<unsigned char>* constrained_edges = nullptr;    // user's edge_is_constrained_map
+};
+
+/// Classifies the vertices of `m` (spec §1), user constraints overriding (§1.5).
+inline Vertex_classification classify(const Flat_mesh& m, const Classification_options& opt) {
+  const std::size_t nv = m.number_of_vertices(), ne = m.edges.size();
+  const double pi = 3.14159265358979323846;
+  // Normal deviation of two face groups meeting at the feature angle, and the
+  // length |x| such a fold gives the discrete normal (spec §1.2).
+  const double deviation = pi - opt.feature_angle_degrees * pi / 180.;
+  const double candidate_length = 1. / std::cos(deviation / 2.);
+  const double sharp_cosine = std::cos(deviation);
+
+  Vertex_classification c;
+  c.type.assign(nv, ILSA_vertex_type::Smooth);
+  c.ridge_candidate.assign(nv, 0);
+  c.sharp_edge.assign(ne, 0);
+  c.crease_of_edge.assign(ne, npos);
+  c.attached_sharp.assign(nv, {npos, npos});
+  c.attached_edges.assign(nv, {npos, npos});
+
+  std::vector<Vec3> face_normals;
+  compute_face_normals(m, m.points, face_normals);
+
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (m.on_border[v])
+      c.type[v] = ILSA_vertex_type::Boundary;
+    else if (m.vertex_faces.size(v) == 0 || m.non_manifold[v])
+      c.type[v] = ILSA_vertex_type::Corner;
+    else if (!opt.constrained_edges)
+      c.ridge_candidate[v] = discrete_normal(m, face_normals, v).norm() > candidate_length;
+  }
+
+  for (std::size_t e = 0; e < ne; ++e) {
+    if (opt.constrained_edges) {
+      c.sharp_edge[e] = (*opt.constrained_edges)[e];
+      continue;
+    }
+    const auto& ends = m.edges[e];
+    const auto& fs = m.edge_faces[e];
+    if (!c.ridge_candidate[ends[0]] || !c.ridge_candidate[ends[1]] || fs[0] == npos || fs[1] == npos) continue;
+    // Dihedral angle below θ_f <=> face normals more than π − θ_f apart.
+    c.sharp_edge[e] = face_normals[fs[0]].dot(face_normals[fs[1]]) < sharp_cosine;
+  }
+
+  // Attached-sharp nodes decide between ridge and corner (spec §1.4, §1.5).
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (c.type[v] != ILSA_vertex_type::Smooth) continue;
+    std::size_t count = 0;
+    const std::size_t* nb = m.vertex_neighbors.first(v);
+    for (const std::size_t* e = m.vertex_edges.first(v); e != m.vertex_edges.last(v); ++e, ++nb) {
+      if (!c.sharp_edge[*e]) continue;
+      if (count < 2) {
+        c.attached_sharp[v][count] = *nb;
+        c.attached_edges[v][count] = *e;
+      }
+      ++count;
+    }
+    const bool candidate = opt.constrained_edges ? count > 0 : bool(c.ridge_candidate[v]);
+    if (!candidate) continue;
+    if (count == 2)
+      c.type[v] = ILSA_vertex_type::Ridge;
+    else if (count != 0 || opt.fix_unattached_candidates)
+      c.type[v] = ILSA_vertex_type::Corner;
+  }
+
+  if (opt.constrained_vertices)
+    for (std::size_t v = 0; v < nv; ++v)
+      if ((*opt.constrained_vertices)[v] && c.type[v] != ILSA_vertex_type::Boundary) c.type[v] = ILSA_vertex_type::Corner;
+
+  for (std::size_t v = 0; v < nv; ++v)
+    if (c.type[v] != ILSA_vertex_type::Ridge) c.attached_sharp[v] = c.attached_edges[v] = {npos, npos};
+
+  // Crease polylines: sharp edges chained through ridge vertices (union-find).
+  std::vector<std::size_t> parent(ne);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&parent](std::size_t e) {
+    while (parent[e] != e) e = parent[e] = parent[parent[e]];
+    return e;
+  };
+  for (std::size_t v = 0; v < nv; ++v)
+    if (c.type[v] == ILSA_vertex_type::Ridge) parent[find(c.attached_edges[v][0])] = find(c.attached_edges[v][1]);
+  for (std::size_t e = 0; e < ne; ++e)
+    if (c.sharp_edge[e]) c.crease_of_edge[e] = find(e);
+  return c;
+}
+
+} // namespace ILSA
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

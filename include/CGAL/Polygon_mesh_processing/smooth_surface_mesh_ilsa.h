@@ -1,0 +1,309 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// ILSA, the improved Laplacian smoothing approach of L. Chen, Y. Zheng,
+// J. Chen and Y. Liang (ICCS 2007). This header reads the named parameters and
+// runs the global loop (the paper's Algo. 1); each stage lives in
+// internal/ILSA/, named after it.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_SMOOTH_SURFACE_MESH_ILSA_H
+#define CGAL_POLYGON_MESH_PROCESSING_SMOOTH_SURFACE_MESH_ILSA_H
+
+#include <CGAL/Named_function_parameters.h>
+#ifndef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE
+#error "CGAL's named-parameter list was included without the ILSA tags: put the package's include/ directory before CGAL's in the include path."
+#endif
+
+#include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/move_safety.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/penalty_adjustment.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+/*!
+ * \ingroup PkgPMPILSARef
+ * smooths a triangle mesh with ILSA, the improved Laplacian smoothing approach
+ * of Chen et al. (ICCS 2007): the vertices of `vertices` move so that the
+ * triangles get better shaped, while every moved vertex stays on the input
+ * surface, boundaries, corners and crease lines are kept, and no triangle
+ * inverts. The connectivity does not change.
+ *
+ * Each of the `number_of_iterations` global iterations computes an ILSA
+ * displacement of every adjustable vertex (Laplacian, diffused with
+ * inverse-distance weights), corrects that of every smooth vertex with a
+ * quadratic-penalty "soap film" step, and projects the moved vertices back onto
+ * a frozen copy of the input (ridge vertices onto their own crease line).
+ *
+ * @tparam VertexRange a model of `Range` of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+ * @tparam TriangleMesh a model of `FaceListGraph`, `EdgeListGraph` and `MutableFaceGraph`
+ *         whose descriptors are hashable (`Surface_mesh`, `Polyhedron_3`, OpenMesh meshes, ...)
+ * @tparam NamedParameters a sequence of named parameters
+ *
+ * @param vertices the vertices that may move; all others are fixed
+ * @param tm the triangle mesh
+ * @param np an optional sequence of named parameters among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+ *     \cgalParamType{a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and `%Point_3` as value}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a model of `Kernel`}
+ *     \cgalParamDefault{a kernel deduced from the point type, using `CGAL::Kernel_traits`}
+ *     \cgalParamExtra{The computation runs in `double` on coordinates relative to the bounding box; points are read with `CGAL::to_double()` and written with the point type's `(x, y, z)` constructor.}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_iterations}
+ *     \cgalParamDescription{the number of global iterations (the paper's max_global_iter_num)}
+ *     \cgalParamType{unsigned int, at most 100000}
+ *     \cgalParamDefault{`10`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_relaxation_steps}
+ *     \cgalParamDescription{the number of sweeps of the ILSA and of the penalty step in each iteration (max_smooth_iter_num); the sweeps stop early once no displacement changes by more than 1e-4 of the mean edge length}
+ *     \cgalParamType{unsigned int, 1 to 10000}
+ *     \cgalParamDefault{`3`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_relaxation}
+ *     \cgalParamDescription{the ILSA relaxation factor relax1 (share of the neighbours' weighted mean displacement taken in each sweep)}
+ *     \cgalParamType{`double`, in (0, 1]}
+ *     \cgalParamDefault{`0.5`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_penalty_relaxation}
+ *     \cgalParamDescription{the relaxation factor relax2 of the penalty step}
+ *     \cgalParamType{`double`, in (0, 1]}
+ *     \cgalParamDefault{`0.5`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_penalty_mu}
+ *     \cgalParamDescription{the penalty parameter μ: the smaller, the more the penalty step keeps a vertex on the plane of its ILSA displacement}
+ *     \cgalParamType{`double`, positive}
+ *     \cgalParamDefault{`0.1`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_length_weight}
+ *     \cgalParamDescription{the weight wl of the edge-length term of the penalty step}
+ *     \cgalParamType{`double`, non-negative}
+ *     \cgalParamDefault{`1`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_area_weight}
+ *     \cgalParamDescription{the weight wa of the squared-area ("soap film") term of the penalty step}
+ *     \cgalParamType{`double`, non-negative}
+ *     \cgalParamDefault{`1`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_feature_angle}
+ *     \cgalParamDescription{the feature (dihedral) angle θ_f in degrees, see `classify_vertices_ilsa()`}
+ *     \cgalParamType{`double`, in (0, 180]}
+ *     \cgalParamDefault{`160` (the paper's 8π/9)}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
+ *     \cgalParamDescription{whether a ridge candidate with no sharp edge is fixed as a corner (the paper's rule) or smoothed as a smooth vertex}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_is_constrained_map}
+ *     \cgalParamDescription{a property map telling which vertices are fixed}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool` as value}
+ *     \cgalParamDefault{no vertex is constrained}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{when given, these edges are the sharp edges instead of the detected ones: a vertex with two constrained edges slides along them, one with one or more than two is fixed}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
+ *     \cgalParamDefault{sharp edges are detected with `ilsa_feature_angle`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{do_project}
+ *     \cgalParamDescription{whether moved vertices are projected back onto the input surface (ridge vertices onto their crease); without projection they stay where the displacement puts them, off the surface}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{use_safety_constraints}
+ *     \cgalParamDescription{whether every move is checked after projection: a move that would reverse a triangle (with respect to the input surface) or collapse it is halved up to three times, then dropped for the iteration. With `false`, the penalty step is the only protection against inverted triangles, as in the paper}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_quality_monotone}
+ *     \cgalParamDescription{with the safety check on, also shorten or drop a move that lowers the minimum aspect ratio of the vertex's star}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{verbose}
+ *     \cgalParamDescription{whether to print the vertex types and what each iteration did to `std::cerr`}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * @return what the call did: vertex types, iterations, accepted, shortened and rejected moves
+ *
+ * @throws ILSA_error if `tm` has a non-triangle face or a non-finite coordinate,
+ *         if a vertex of `vertices` is not a vertex of `tm`, or if a parameter
+ *         is out of range. These checks run before anything is written: when
+ *         the function throws, `tm` is unchanged. They do not depend on `NDEBUG`.
+ *
+ * @pre `tm` is a triangle mesh (checked, see above). Degenerate faces, isolated
+ *      and non-manifold vertices, several connected components and
+ *      self-intersections are accepted: isolated and non-manifold vertices are fixed.
+ */
+template <typename VertexRange, typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMesh& tm,
+                                         const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace ilsa = internal::ILSA;
+  using GT = boost::graph_traits<TriangleMesh>;
+  using Vec3 = ilsa::Vec3;
+
+  // Named parameters, every knob and its default in one place.
+  using VPM = typename GetVertexPointMap<TriangleMesh, NamedParameters>::type;
+  using Point = typename boost::property_traits<VPM>::value_type;
+  VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tm));
+  const auto iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 10);
+  const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), 3);
+  const double relax1 = choose_parameter(get_parameter(np, internal_np::ilsa_relaxation), 0.5);
+  ilsa::Penalty_parameters penalty;
+  penalty.relax2 = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), 0.5);
+  penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), 0.1);
+  penalty.length_weight = choose_parameter(get_parameter(np, internal_np::ilsa_length_weight), 1.);
+  penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), 1.);
+  const bool do_project = choose_parameter(get_parameter(np, internal_np::do_project), true);
+  const bool use_safety = choose_parameter(get_parameter(np, internal_np::use_safety_constraints), true);
+  const bool quality_monotone = choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), false);
+  const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
+  // (ilsa_feature_angle, ilsa_fix_unattached_candidates and the constraint
+  // maps are read by read_classification_parameters() below.)
+
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw ILSA_error(what);
+  };
+  require(iterations >= 0 && iterations <= 100000, "number_of_iterations must be in [0, 100000]");
+  require(sweeps >= 1 && sweeps <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
+  require(relax1 > 0 && relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
+  require(penalty.relax2 > 0 && penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]");
+  require(penalty.mu > 0 && std::isfinite(penalty.mu), "ilsa_penalty_mu must be positive and finite");
+  require(penalty.length_weight >= 0 && std::isfinite(penalty.length_weight), "ilsa_length_weight must be non-negative and finite");
+  require(penalty.area_weight >= 0 && std::isfinite(penalty.area_weight), "ilsa_area_weight must be non-negative and finite");
+  penalty.sweeps = std::size_t(sweeps);
+
+  // Frozen flat copy of the input (T_ori), user constraints, vertex range.
+  std::vector<typename GT::vertex_descriptor> vertex_list;
+  ilsa::Vertex_index_map<TriangleMesh> vertex_index;
+  std::vector<typename GT::edge_descriptor> edge_list;
+  const ilsa::Flat_mesh original = ilsa::build_flat_mesh(tm, vpm, vertex_list, vertex_index, edge_list);
+  std::vector<unsigned char> constrained_vertices, constrained_edges;
+  const auto options = ilsa::read_classification_parameters(tm, np, vertex_list, edge_list, constrained_vertices,
+                                                            constrained_edges);
+  std::vector<unsigned char> movable(original.number_of_vertices(), 0);
+  for (auto v : vertices) {
+    const auto found = vertex_index.find(v);
+    require(found != vertex_index.end(), "a vertex of the range is not a vertex of the mesh");
+    movable[found->second] = 1;
+  }
+
+  // Classify vertices on T_ori (spec §1).
+  const ilsa::Vertex_classification classification = ilsa::classify(original, options);
+  ILSA_statistics stats;
+  ilsa::count_types(classification, stats);
+  if (verbose)
+    std::cerr << "ILSA: " << stats.number_of_smooth_vertices << " smooth, " << stats.number_of_ridge_vertices
+              << " ridge, " << stats.number_of_corner_vertices << " corner, " << stats.number_of_boundary_vertices
+              << " boundary vertices\n";
+
+  const ilsa::Ilsa_neighborhoods neighborhoods = ilsa::make_ilsa_neighborhoods(original, classification, movable);
+  if (neighborhoods.adjustable.empty() || iterations == 0) return stats;
+
+  const ilsa::Projector projector(original, classification);
+  ilsa::Move_safety safety(original, quality_monotone, 3);
+  auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
+    if (!do_project) return ilsa::Projector::Result{q, home, false};
+    return projector.project(v, q, current, home);
+  };
+
+  double mean_edge_length = 0;
+  for (const auto& e : original.edges) mean_edge_length += (original.points[e[0]] - original.points[e[1]]).norm();
+  mean_edge_length /= double((std::max)(original.edges.size(), std::size_t(1)));
+  const double tolerance = 1e-4 * mean_edge_length;
+  penalty.tolerance = tolerance;
+
+  // T_new := T_ori. `home` is the original face (ridge: sharp edge) each vertex lies on.
+  std::vector<Vec3> pos = original.points, next, target(pos.size()), d, face_normals;
+  std::vector<Vec3> vertex_normals(pos.size(), Vec3::Zero());
+  std::vector<std::size_t> home(pos.size(), ilsa::npos), next_home, moved;
+  for (std::size_t v : neighborhoods.adjustable) home[v] = projector.initial_home(v);
+  ilsa::Ilsa_workspace ilsa_workspace;
+  ilsa::Penalty_workspace penalty_workspace;
+
+  for (std::size_t step = 0; step < std::size_t(iterations); ++step) {
+    // N(v): discrete normal of every smooth vertex of T_new (spec §1.2, normalised).
+    ilsa::compute_face_normals(original, pos, face_normals);
+    for (std::size_t v : neighborhoods.smooth) {
+      const Vec3 n = ilsa::discrete_normal(original, face_normals, v);
+      vertex_normals[v] = n.norm() > 0 ? Vec3(n.normalized()) : n;
+    }
+    // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices (Algo. 3).
+    ilsa::compute_ilsa_displacement(pos, neighborhoods, relax1, std::size_t(sweeps), tolerance, d, ilsa_workspace);
+    ilsa::adjust_displacement_by_penalty(original, pos, vertex_normals, neighborhoods, penalty, d, penalty_workspace);
+
+    // p(v): projection of v + d(v) onto T_ori (spec §5), then the safety check.
+    next = pos;
+    next_home = home;
+    moved.clear();
+    for (std::size_t v : neighborhoods.adjustable) {
+      target[v] = pos[v] + d[v];
+      const auto r = project(v, target[v], pos[v], home[v]);
+      next[v] = r.point;
+      next_home[v] = r.home;
+      if (r.guarded) ++stats.number_of_guarded_projections;
+      if (next[v] != pos[v]) moved.push_back(v);
+    }
+    if (use_safety) {
+      const auto counts = safety.enforce(pos, home, target, moved, next, next_home, project);
+      stats.number_of_shortened_moves += counts.shortened;
+      stats.number_of_rejected_moves += counts.rejected;
+      stats.number_of_moves += moved.size() - counts.rejected;
+    } else {
+      stats.number_of_moves += moved.size();
+    }
+    pos.swap(next);
+    home.swap(next_home);
+    ++stats.number_of_iterations;
+    if (verbose)
+      std::cerr << "ILSA iteration " << step + 1 << ": " << moved.size() << " moves, "
+                << stats.number_of_shortened_moves << " shortened and " << stats.number_of_rejected_moves
+                << " rejected so far\n";
+  }
+
+  // T_new is written back; fixed and unmoved vertices are not touched.
+  for (std::size_t v : neighborhoods.adjustable) {
+    if (pos[v] == original.points[v]) continue;
+    const Vec3 p = original.to_input(pos[v]);
+    put(vpm, vertex_list[v], Point(p.x(), p.y(), p.z()));
+  }
+  return stats;
+}
+
+/*!
+ * \ingroup PkgPMPILSARef
+ * smooths all vertices of `tm` with ILSA; see the range overload for the
+ * named parameters.
+ */
+template <typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+ILSA_statistics smooth_surface_mesh_ilsa(TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::default_values()) {
+  return smooth_surface_mesh_ilsa(vertices(tm), tm, np);
+}
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,30 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Extends CGAL's list of named parameters with the tags of the ILSA smoother, so
+// that `CGAL::parameters::number_of_iterations(5).ilsa_penalty_mu(0.1)` and
+// `CGAL::parameters::ilsa_penalty_mu(0.1).number_of_iterations(5)` both chain.
+//
+// CGAL includes this list several times, each time with another definition of
+// `CGAL_add_named_parameter` (enum tags, member functions, free functions), so
+// this file must have no include guard. It is found before CGAL's own copy
+// because the package's `include/` directory precedes the system one; it then
+// pulls in CGAL's list with `#include_next`.
+
+#include_next <CGAL/STL_Extension/internal/parameters_interface.h>
+
+// ILSA parameters (see smooth_surface_mesh_ilsa.h for their meaning)
+CGAL_add_named_parameter(ilsa_relaxation_t, ilsa_relaxation, ilsa_relaxation)
+CGAL_add_named_parameter(ilsa_penalty_relaxation_t, ilsa_penalty_relaxation, ilsa_penalty_relaxation)
+CGAL_add_named_parameter(ilsa_penalty_mu_t, ilsa_penalty_mu, ilsa_penalty_mu)
+CGAL_add_named_parameter(ilsa_length_weight_t, ilsa_length_weight, ilsa_length_weight)
+CGAL_add_named_parameter(ilsa_area_weight_t, ilsa_area_weight, ilsa_area_weight)
+CGAL_add_named_parameter(ilsa_feature_angle_t, ilsa_feature_angle, ilsa_feature_angle)
+CGAL_add_named_parameter(ilsa_fix_unattached_candidates_t, ilsa_fix_unattached_candidates, ilsa_fix_unattached_candidates)
+CGAL_add_named_parameter(ilsa_quality_monotone_t, ilsa_quality_monotone, ilsa_quality_monotone)
+
+// Checked by the package's public headers: if CGAL's own list was picked up
+// instead of this one, compilation stops with a clear message.
+#ifndef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE
+#define CGAL_ILSA_NAMED_PARAMETERS_INTERFACE 1
+#endif
