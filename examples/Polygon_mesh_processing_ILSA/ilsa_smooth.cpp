@@ -34,7 +34,7 @@ struct Options {
   std::string input = std::string(ILSA_DATA_DIR) + "/horse.ply";
   std::string output;
   unsigned int iterations = 10, relaxation_steps = 3;
-  double relax1 = 0.5, relax2 = 0.5, mu = 0.1, wl = 1., wa = 1., feature_angle = 160.;
+  double relax1 = 0.5, relax2 = 0.5, mu = 0.1, wl = 1., wa = 1., feature_angle = 160., quality_floor = 0.3;
   bool fix_unattached = true, project = true, safety = true, monotone = false, verbose = false;
 };
 
@@ -51,6 +51,7 @@ const char* usage =
     "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
     "  --no-project            do not project back onto the input surface\n"
     "  --no-safety             no inversion check after projection\n"
+    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1) (default 0.3)\n"
     "  --quality-monotone      reject moves that lower the star's minimum quality\n"
     "  --verbose               print what each iteration does\n";
 
@@ -85,6 +86,7 @@ Options parse(int argc, char** argv) {
       {"--wl", [&](const std::string& s) { o.wl = parse_number("--wl", s); }},
       {"--wa", [&](const std::string& s) { o.wa = parse_number("--wa", s); }},
       {"--feature-angle", [&](const std::string& s) { o.feature_angle = parse_number("--feature-angle", s); }},
+      {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
       {"--fix-unattached", [&](const std::string& s) { o.fix_unattached = parse_count("--fix-unattached", s) != 0; }},
   };
   std::map<std::string, bool*> switches{{"--no-project", nullptr}, {"--no-safety", nullptr},
@@ -143,6 +145,7 @@ int run(const Options& o) {
                 .ilsa_fix_unattached_candidates(o.fix_unattached)
                 .do_project(o.project)
                 .use_safety_constraints(o.safety)
+                .ilsa_quality_floor(o.quality_floor)
                 .ilsa_quality_monotone(o.monotone)
                 .verbose(o.verbose));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

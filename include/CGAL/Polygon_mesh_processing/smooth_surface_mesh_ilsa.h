@@ -133,6 +133,11 @@ namespace Polygon_mesh_processing {
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`true`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_quality_floor}
+ *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it brings a triangle's aspect ratio below this floor, unless the triangle was already below it and does not get worse. 0 disables this part of the check}
+ *     \cgalParamType{`double`, in [0, 1)}
+ *     \cgalParamDefault{`0.3`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_quality_monotone}
  *     \cgalParamDescription{with the safety check on, also shorten or drop a move that lowers the minimum aspect ratio of the vertex's star}
  *     \cgalParamType{`bool`}
@@ -179,6 +184,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), 1.);
   const bool do_project = choose_parameter(get_parameter(np, internal_np::do_project), true);
   const bool use_safety = choose_parameter(get_parameter(np, internal_np::use_safety_constraints), true);
+  const double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), 0.3);
   const bool quality_monotone = choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), false);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   // (ilsa_feature_angle, ilsa_fix_unattached_candidates and the constraint
@@ -187,8 +193,9 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   auto require = [](bool ok, const std::string& what) {
     if (!ok) throw ILSA_error(what);
   };
-  require(iterations >= 0 && iterations <= 100000, "number_of_iterations must be in [0, 100000]");
-  require(sweeps >= 1 && sweeps <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
+  require(quality_floor >= 0 && quality_floor < 1, "ilsa_quality_floor must be in [0, 1)");
+  require(double(iterations) >= 0 && double(iterations) <= 100000, "number_of_iterations must be in [0, 100000]");
+  require(double(sweeps) >= 1 && double(sweeps) <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
   require(relax1 > 0 && relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
   require(penalty.relax2 > 0 && penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]");
   require(penalty.mu > 0 && std::isfinite(penalty.mu), "ilsa_penalty_mu must be positive and finite");
@@ -224,7 +231,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   if (neighborhoods.adjustable.empty() || iterations == 0) return stats;
 
   const ilsa::Projector projector(original, classification);
-  ilsa::Move_safety safety(original, quality_monotone, 3);
+  ilsa::Move_safety safety(original, quality_floor, quality_monotone, 3);
   auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
     if (!do_project) return ilsa::Projector::Result{q, home, false};
     return projector.project(v, q, current, home);

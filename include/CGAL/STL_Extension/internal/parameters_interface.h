@@ -21,6 +21,7 @@ CGAL_add_named_parameter(ilsa_length_weight_t, ilsa_length_weight, ilsa_length_w
 CGAL_add_named_parameter(ilsa_area_weight_t, ilsa_area_weight, ilsa_area_weight)
 CGAL_add_named_parameter(ilsa_feature_angle_t, ilsa_feature_angle, ilsa_feature_angle)
 CGAL_add_named_parameter(ilsa_fix_unattached_candidates_t, ilsa_fix_unattached_candidates, ilsa_fix_unattached_candidates)
+CGAL_add_named_parameter(ilsa_quality_floor_t, ilsa_quality_floor, ilsa_quality_floor)
 CGAL_add_named_parameter(ilsa_quality_monotone_t, ilsa_quality_monotone, ilsa_quality_monotone)
 
 // Checked by the package's public headers: if CGAL's own list was picked up

@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Safety check after projection (`use_safety_constraints`): no triangle may
-// reverse its orientation with respect to the original surface or collapse.
+// reverse its orientation with respect to the original surface or collapse,
+// and none may fall below the quality floor unless it was already there (then
+// it may not get worse).
 // A vertex of an offending triangle has its move halved (and re-projected) a
 // few times, then dropped for this iteration. Since the moves are applied all
 // at once (Jacobi), the check is repeated until no triangle offends; it ends
@@ -31,8 +33,8 @@ public:
   /// under this fraction of its longest edge squared.
   static constexpr double collapse_tolerance = 1e-6;
 
-  Move_safety(const Flat_mesh& original, bool quality_monotone, std::size_t halvings)
-      : m_(original), quality_monotone_(quality_monotone), halvings_(halvings) {
+  Move_safety(const Flat_mesh& original, double quality_floor, bool quality_monotone, std::size_t halvings)
+      : m_(original), quality_floor_(quality_floor), quality_monotone_(quality_monotone), halvings_(halvings) {
     // Reference orientation of each face: its original normal, or for a face
     // degenerate in the input the normals of its edge-adjacent faces.
     reference_.resize(m_.number_of_faces());
@@ -47,6 +49,8 @@ public:
       if (collapsed(m_.points, f)) reference_[f] = from_neighbors[f];
     stamp_.assign(m_.number_of_faces(), 0);
     tries_.assign(m_.number_of_vertices(), 0);
+    checked_.assign(m_.number_of_vertices(), 0);
+    is_moved_.assign(m_.number_of_vertices(), 0);
   }
 
   struct Counts {
@@ -61,23 +65,20 @@ public:
   Counts enforce(const std::vector<Vec3>& previous, const std::vector<std::size_t>& previous_home,
                  const std::vector<Vec3>& target, const std::vector<std::size_t>& moved, std::vector<Vec3>& next,
                  std::vector<std::size_t>& next_home, const Project& project) {
-    Counts counts;
-    for (std::size_t v : moved) tries_[v] = 0;
-    std::vector<std::size_t> offenders;
-    for (;;) {
-      offenders.clear();
+    for (std::size_t v : moved) tries_[v] = 0, is_moved_[v] = 1;
+    std::vector<std::size_t> to_check(moved), offenders;
+    while (!to_check.empty()) {
       ++round_;
       // A vertex is shortened when any face around it offends, so every moved
       // vertex of an offending face is.
-      for (std::size_t v : moved) {
-        if (tries_[v] > halvings_) continue; // already back at its previous position
+      offenders.clear();
+      for (std::size_t v : to_check) {
         bool bad = false;
         for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v) && !bad; ++f)
           bad = offends(previous, next, *f);
         if (!bad && quality_monotone_) bad = star_quality(next, v) < star_quality(previous, v);
         if (bad) offenders.push_back(v);
       }
-      if (offenders.empty()) break;
       for (std::size_t v : offenders) {
         ++tries_[v];
         if (tries_[v] <= halvings_) {
@@ -90,8 +91,19 @@ public:
           next_home[v] = previous_home[v];
         }
       }
+      // Only the stars of the vertices just changed need a new look.
+      to_check.clear();
+      for (std::size_t v : offenders)
+        for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+          for (std::size_t w : m_.faces[*f])
+            if (is_moved_[w] && tries_[w] <= halvings_ && checked_[w] != round_) {
+              checked_[w] = round_;
+              to_check.push_back(w);
+            }
     }
+    Counts counts;
     for (std::size_t v : moved) {
+      is_moved_[v] = 0;
       if (tries_[v] > halvings_) ++counts.rejected;
       else if (tries_[v] > 0) ++counts.shortened;
     }
@@ -111,11 +123,17 @@ public:
   }
 
 private:
-  // A face offends if it is flipped or collapsed now and was not before.
+  // A face offends if it is flipped or collapsed now and was not before, or if
+  // its aspect ratio dropped below the quality floor.
   bool offends(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t f) {
     if (stamp_[f] == round_) return true;
     const bool was_bad = collapsed(previous, f) || flipped(previous, f);
-    const bool is_bad = collapsed(next, f) || flipped(next, f);
+    bool is_bad = collapsed(next, f) || flipped(next, f);
+    if (!is_bad && quality_floor_ > 0) {
+      const auto& t = m_.faces[f];
+      const double q = triangle_aspect_ratio(next[t[0]], next[t[1]], next[t[2]]);
+      is_bad = q < quality_floor_ && q < triangle_aspect_ratio(previous[t[0]], previous[t[1]], previous[t[2]]);
+    }
     if (is_bad && !was_bad) {
       stamp_[f] = round_;
       return true;
@@ -133,11 +151,14 @@ private:
   }
 
   const Flat_mesh& m_;
+  double quality_floor_;
   bool quality_monotone_;
   std::size_t halvings_;
   std::vector<Vec3> reference_;
   std::vector<std::size_t> stamp_; // round in which a face was found offending
-  std::vector<std::size_t> tries_; // halvings applied to a vertex's move
+  std::vector<std::size_t> tries_;   // halvings applied to a vertex's move
+  std::vector<std::size_t> checked_; // round in which a vertex was queued for a check
+  std::vector<unsigned char> is_moved_;
   std::size_t round_ = 0;
 };
 

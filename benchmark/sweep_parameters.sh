@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Parameter sweep behind the defaults of smooth_surface_mesh_ilsa (see the user
+# manual). Runs the ilsa_smooth tool over a grid of parameter values on the
+# given meshes and prints one line per run: mesh, parameters, q min, q mean,
+# share of q < 0.3, minimum angle, time.
+#
+#   benchmark/sweep_parameters.sh BUILD_DIR [MESH ...]
+#
+# Grids can be overridden through the environment, e.g. ITERATIONS="10 20".
+set -euo pipefail
+build=${1:?usage: sweep_parameters.sh BUILD_DIR [MESH ...]}
+shift
+tool="$build/examples/Polygon_mesh_processing_ILSA/ilsa_smooth"
+here=$(cd "$(dirname "$0")/.." && pwd)
+meshes=("$@")
+[ ${#meshes[@]} -gt 0 ] || meshes=("$here"/data/meshes/*.off "$here"/data/meshes/*.ply)
+
+ITERATIONS=${ITERATIONS:-"10"}
+STEPS=${STEPS:-"3"}
+RELAX1=${RELAX1:-"0.5"}
+RELAX2=${RELAX2:-"0.5"}
+MU=${MU:-"0.1"}
+WL=${WL:-"1"}
+WA=${WA:-"1"}
+ANGLE=${ANGLE:-"160"}
+UNATTACHED=${UNATTACHED:-"1"}
+FLOOR=${FLOOR:-"0.3"}
+
+printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %5s | %7s %7s %7s %7s %7s\n' \
+  mesh iter steps relax1 relax2 mu wl wa angle fix floor q_min q_mean 'q<0.3%' min_ang time_s
+for mesh in "${meshes[@]}"; do
+for it in $ITERATIONS; do for st in $STEPS; do for r1 in $RELAX1; do for r2 in $RELAX2; do
+for mu in $MU; do for wl in $WL; do for wa in $WA; do for an in $ANGLE; do for fx in $UNATTACHED; do for fl in $FLOOR; do
+  out=$("$tool" "$mesh" --iterations "$it" --relaxation-steps "$st" --relax1 "$r1" --relax2 "$r2" --mu "$mu" \
+        --wl "$wl" --wa "$wa" --feature-angle "$an" --fix-unattached "$fx" --quality-floor "$fl")
+  after=$(grep '^after' <<<"$out")
+  qmin=$(sed -E 's/.*q min ([0-9.]+).*/\1/' <<<"$after")
+  qmean=$(sed -E 's/.*mean ([0-9.]+).*/\1/' <<<"$after")
+  below=$(sed -E 's/.*q<0.3 ([0-9.]+) %.*/\1/' <<<"$after")
+  angle=$(sed -E 's/.*min angle ([0-9.]+) deg.*/\1/' <<<"$after")
+  secs=$(grep '^time' <<<"$out" | sed -E 's/time: ([0-9.]+) s.*/\1/')
+  printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %5s | %7s %7s %7s %7s %7s\n' \
+    "$(basename "$mesh")" "$it" "$st" "$r1" "$r2" "$mu" "$wl" "$wa" "$an" "$fx" "$fl" "$qmin" "$qmean" "$below" "$angle" "$secs"
+done; done; done; done; done; done; done; done; done; done
+done
