@@ -134,12 +134,12 @@ namespace Polygon_mesh_processing {
  *     \cgalParamDefault{`true`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_quality_floor}
- *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it brings a triangle's aspect ratio below this floor, unless the triangle was already below it and does not get worse. 0 disables this part of the check}
+ *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it lowers the minimum aspect ratio of the vertex's star to a value below this floor. 0 disables this part of the check}
  *     \cgalParamType{`double`, in [0, 1)}
  *     \cgalParamDefault{`0.3`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_quality_monotone}
- *     \cgalParamDescription{with the safety check on, also shorten or drop a move that lowers the minimum aspect ratio of the vertex's star}
+ *     \cgalParamDescription{with the safety check on, shorten or drop every move that lowers the minimum aspect ratio of the vertex's star (the same as a quality floor of 1)}
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`false`}
  *   \cgalParamNEnd
@@ -231,7 +231,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   if (neighborhoods.adjustable.empty() || iterations == 0) return stats;
 
   const ilsa::Projector projector(original, classification);
-  ilsa::Move_safety safety(original, quality_floor, quality_monotone, 3);
+  ilsa::Move_safety safety(original, quality_monotone ? 1. : quality_floor, 3);
   auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
     if (!do_project) return ilsa::Projector::Result{q, home, false};
     return projector.project(v, q, current, home);

@@ -3,8 +3,8 @@
 //
 // Safety check after projection (`use_safety_constraints`): no triangle may
 // reverse its orientation with respect to the original surface or collapse,
-// and none may fall below the quality floor unless it was already there (then
-// it may not get worse).
+// and the worst triangle around a moved vertex may not get worse if it ends
+// below the quality floor.
 // A vertex of an offending triangle has its move halved (and re-projected) a
 // few times, then dropped for this iteration. Since the moves are applied all
 // at once (Jacobi), the check is repeated until no triangle offends; it ends
@@ -33,20 +33,23 @@ public:
   /// under this fraction of its longest edge squared.
   static constexpr double collapse_tolerance = 1e-6;
 
-  Move_safety(const Flat_mesh& original, double quality_floor, bool quality_monotone, std::size_t halvings)
-      : m_(original), quality_floor_(quality_floor), quality_monotone_(quality_monotone), halvings_(halvings) {
-    // Reference orientation of each face: its original normal, or for a face
-    // degenerate in the input the normals of its edge-adjacent faces.
+  /// `quality_floor`: a move may not lower the minimum aspect ratio of the
+  /// vertex's star below this value (1: never lower it, the quality-monotone mode).
+  Move_safety(const Flat_mesh& original, double quality_floor, std::size_t halvings)
+      : m_(original), quality_floor_(quality_floor), halvings_(halvings) {
+    // Reference orientation of each face: twice its input normal plus the input
+    // normals of its edge-adjacent faces. It agrees with the face except where
+    // the input itself is folded (a face opposite to its neighbours): such a
+    // face counts as already flipped, so moves that unfold it are allowed.
+    std::vector<Vec3> own(m_.number_of_faces());
+    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) own[f] = unit_normal(m_.points, m_.faces[f]);
     reference_.resize(m_.number_of_faces());
-    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) reference_[f] = unit_normal(m_.points, m_.faces[f]);
-    std::vector<Vec3> from_neighbors(m_.number_of_faces(), Vec3::Zero());
+    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) reference_[f] = 2. * own[f];
     for (const auto& fs : m_.edge_faces)
       if (fs[0] != npos && fs[1] != npos) {
-        from_neighbors[fs[0]] += reference_[fs[1]];
-        from_neighbors[fs[1]] += reference_[fs[0]];
+        reference_[fs[0]] += own[fs[1]];
+        reference_[fs[1]] += own[fs[0]];
       }
-    for (std::size_t f = 0; f < m_.number_of_faces(); ++f)
-      if (collapsed(m_.points, f)) reference_[f] = from_neighbors[f];
     stamp_.assign(m_.number_of_faces(), 0);
     tries_.assign(m_.number_of_vertices(), 0);
     checked_.assign(m_.number_of_vertices(), 0);
@@ -76,7 +79,11 @@ public:
         bool bad = false;
         for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v) && !bad; ++f)
           bad = offends(previous, next, *f);
-        if (!bad && quality_monotone_) bad = star_quality(next, v) < star_quality(previous, v);
+        if (!bad && quality_floor_ > 0) {
+          // The star's worst triangle may not get worse and end below the floor.
+          const double q = star_quality(next, v);
+          bad = q < quality_floor_ && q < star_quality(previous, v);
+        }
         if (bad) offenders.push_back(v);
       }
       for (std::size_t v : offenders) {
@@ -123,17 +130,11 @@ public:
   }
 
 private:
-  // A face offends if it is flipped or collapsed now and was not before, or if
-  // its aspect ratio dropped below the quality floor.
+  // A face offends if it is flipped or collapsed now and was not before.
   bool offends(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t f) {
     if (stamp_[f] == round_) return true;
     const bool was_bad = collapsed(previous, f) || flipped(previous, f);
-    bool is_bad = collapsed(next, f) || flipped(next, f);
-    if (!is_bad && quality_floor_ > 0) {
-      const auto& t = m_.faces[f];
-      const double q = triangle_aspect_ratio(next[t[0]], next[t[1]], next[t[2]]);
-      is_bad = q < quality_floor_ && q < triangle_aspect_ratio(previous[t[0]], previous[t[1]], previous[t[2]]);
-    }
+    const bool is_bad = collapsed(next, f) || flipped(next, f);
     if (is_bad && !was_bad) {
       stamp_[f] = round_;
       return true;
@@ -141,6 +142,7 @@ private:
     return false;
   }
 
+  // Worst aspect ratio around `v`.
   double star_quality(const std::vector<Vec3>& pos, std::size_t v) const {
     double q = 1.;
     for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
@@ -152,7 +154,6 @@ private:
 
   const Flat_mesh& m_;
   double quality_floor_;
-  bool quality_monotone_;
   std::size_t halvings_;
   std::vector<Vec3> reference_;
   std::vector<std::size_t> stamp_; // round in which a face was found offending

@@ -1,0 +1,225 @@
+// Smoothing invariants (spec goal): fixed vertices bit-identical, ridge
+// vertices on their crease, every vertex on the input surface, no flipped
+// face, better mean quality; planar grids stay planar; Surface_mesh and
+// Polyhedron_3 agree; the result does not depend on the vertex order (Jacobi);
+// named parameters chain in both orders; the range overload fixes the rest.
+#include "ilsa_test_utils.h"
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+
+using namespace ilsa_test;
+
+const double on_surface = 1e-9; // of the bounding-box diagonal
+
+void require(const Invariant_report& r, const char* what) {
+  std::cout << what << ": max distance " << r.max_distance << ", flipped " << r.flipped << ", fixed moved "
+            << r.fixed_moved << ", ridge off crease " << r.ridge_off_crease << ", mean q " << r.mean_q_before << " -> "
+            << r.mean_q_after << "\n";
+  assert(r.max_distance <= on_surface);
+  assert(r.flipped == 0);
+  assert(r.fixed_moved == 0);
+  assert(r.ridge_off_crease == 0);
+  assert(r.mean_q_after > r.mean_q_before);
+}
+
+template <class Mesh>
+void test_perturbed_cube() {
+  const int n = 8;
+  Soup soup = cube(n);
+  perturb_cube(soup, n, 0.4, 3);
+  const Mesh original = to_mesh<Mesh>(soup);
+  Mesh m = original;
+  const auto s = PMP::smooth_surface_mesh_ilsa(m);
+  assert(s.number_of_ridge_vertices == std::size_t(12 * (n - 1)));
+  assert(s.number_of_moves > 0);
+  // A ridge vertex of the cube stays on a cube edge: two coordinates at +-1.
+  require(check_invariants(original, m, [](std::size_t, const Point& p) { return cube_extremal_coordinates(p, 1e-12) == 2; }),
+          "cube");
+}
+
+template <class Mesh>
+void test_planar_grid() {
+  const int n = 12;
+  Mesh original = to_mesh<Mesh>(grid(n));
+  perturb_on_surface(original, 0.9, 4);
+  Mesh m = original;
+  PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::number_of_iterations(20));
+  for (const Point& p : points_of(m)) assert(p.z() == 0.);
+  require(check_invariants(original, m, [](std::size_t, const Point&) { return false; }), "planar grid");
+  assert(PMP::mesh_quality_ilsa(m).min_aspect_ratio > PMP::mesh_quality_ilsa(original).min_aspect_ratio);
+}
+
+// Fandisk, perturbed along its surface: ridge vertices must stay on the sharp
+// edges that CGAL's detect_sharp_edges finds on the input.
+template <class Mesh>
+void test_fandisk() {
+  Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
+  perturb_on_surface(original, 0.3, 5);
+  Mesh m = original;
+  PMP::smooth_surface_mesh_ilsa(m);
+
+  using ed = typename boost::graph_traits<Mesh>::edge_descriptor;
+  std::map<ed, bool> sharp;
+  PMP::detect_sharp_edges(original, 20., boost::make_assoc_property_map(sharp));
+  std::vector<K::Segment_3> segments;
+  for (const auto& e : sharp)
+    if (e.second)
+      segments.emplace_back(get(CGAL::vertex_point, original, source(e.first, original)),
+                            get(CGAL::vertex_point, original, target(e.first, original)));
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, std::vector<K::Segment_3>::iterator>>>;
+  Tree tree(segments.begin(), segments.end());
+  const double tolerance = on_surface * bbox_diagonal(original);
+  require(check_invariants(original, m,
+                           [&](std::size_t, const Point& p) { return tree.squared_distance(p) <= tolerance * tolerance; }),
+          "fandisk");
+}
+
+template <class Mesh>
+void test_sphere() {
+  Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
+  perturb_on_surface(original, 0.3, 6);
+  Mesh m = original;
+  PMP::smooth_surface_mesh_ilsa(m);
+  require(check_invariants(original, m, [](std::size_t, const Point&) { return false; }), "sphere");
+}
+
+double max_difference(const std::vector<Point>& a, const std::vector<Point>& b) {
+  assert(a.size() == b.size());
+  double d = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) d = (std::max)(d, std::sqrt(CGAL::squared_distance(a[i], b[i])));
+  return d;
+}
+
+// Same input as Surface_mesh and Polyhedron_3: same coordinates.
+void test_mesh_types_agree() {
+  Surface_mesh sm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
+  perturb_on_surface(sm, 0.3, 7);
+  Soup soup;
+  soup.points = points_of(sm);
+  for (auto f : faces(sm)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for (auto v : vertices_around_face(halfedge(f, sm), sm)) t[k++] = std::size_t(v);
+    soup.triangles.push_back(t);
+  }
+  Polyhedron poly = to_mesh<Polyhedron>(soup);
+  PMP::smooth_surface_mesh_ilsa(sm);
+  PMP::smooth_surface_mesh_ilsa(poly);
+  const double d = max_difference(points_of(sm), points_of(poly));
+  std::cout << "Surface_mesh vs Polyhedron_3: max difference " << d << "\n";
+  assert(d <= 1e-12 * bbox_diagonal(sm));
+}
+
+// A permutation of the vertices gives the same result (Jacobi sweeps).
+void test_vertex_order() {
+  Surface_mesh sm = read_mesh<Surface_mesh>(data_file("sphere_low.off"));
+  perturb_on_surface(sm, 0.3, 8);
+  Soup soup, shuffled;
+  soup.points = points_of(sm);
+  for (auto f : faces(sm)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for (auto v : vertices_around_face(halfedge(f, sm), sm)) t[k++] = std::size_t(v);
+    soup.triangles.push_back(t);
+  }
+  std::vector<std::size_t> permutation(soup.points.size());
+  std::iota(permutation.begin(), permutation.end(), std::size_t(0));
+  std::shuffle(permutation.begin(), permutation.end(), std::mt19937(9)); // old index -> new index
+  shuffled.points.resize(soup.points.size());
+  for (std::size_t i = 0; i < soup.points.size(); ++i) shuffled.points[permutation[i]] = soup.points[i];
+  for (auto t : soup.triangles) shuffled.triangles.push_back({permutation[t[0]], permutation[t[1]], permutation[t[2]]});
+  std::reverse(shuffled.triangles.begin(), shuffled.triangles.end());
+
+  Surface_mesh a = to_mesh<Surface_mesh>(soup), b = to_mesh<Surface_mesh>(shuffled);
+  PMP::smooth_surface_mesh_ilsa(a);
+  PMP::smooth_surface_mesh_ilsa(b);
+  const auto pa = points_of(a), pb = points_of(b);
+  std::vector<Point> pb_in_a_order(pa.size());
+  for (std::size_t i = 0; i < pa.size(); ++i) pb_in_a_order[i] = pb[permutation[i]];
+  const double d = max_difference(pa, pb_in_a_order);
+  const double moved = max_difference(pa, soup.points);
+  std::cout << "vertex order: max difference " << d << " (largest move " << moved << ")\n";
+  assert(moved > 1e-3);
+  assert(d <= 1e-12 * bbox_diagonal(a));
+}
+
+// Named parameters chain in both orders with CGAL's own, and take effect.
+template <class Mesh>
+void test_named_parameter_chaining() {
+  Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
+  perturb_on_surface(original, 0.3, 10);
+  auto run = [&](const auto& np) {
+    Mesh m = original;
+    const auto s = PMP::smooth_surface_mesh_ilsa(m, np);
+    return std::make_pair(points_of(m), s.number_of_iterations);
+  };
+  const auto a = run(CGAL::parameters::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_relaxation(0.3));
+  const auto b = run(CGAL::parameters::ilsa_relaxation(0.3).ilsa_penalty_mu(5.).number_of_iterations(4));
+  const auto default_mu = run(CGAL::parameters::number_of_iterations(4).ilsa_relaxation(0.3));
+  const auto default_relax = run(CGAL::parameters::ilsa_penalty_mu(5.).number_of_iterations(4));
+  assert(a.second == 4 && b.second == 4);
+  assert(max_difference(a.first, b.first) == 0);
+  assert(max_difference(a.first, default_mu.first) > 1e-6);
+  assert(max_difference(a.first, default_relax.first) > 1e-6);
+  // Every ILSA tag changes the result.
+  const auto c = run(CGAL::parameters::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_relaxation(0.3)
+                         .ilsa_penalty_relaxation(0.9).ilsa_length_weight(2.).ilsa_area_weight(0.).verbose(false));
+  assert(max_difference(a.first, c.first) > 1e-6);
+}
+
+// Only the vertices of the range move.
+template <class Mesh>
+void test_vertex_range() {
+  Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
+  perturb_on_surface(original, 0.3, 11);
+  Mesh m = original;
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> half;
+  std::size_t i = 0;
+  for (auto v : vertices(m))
+    if (i++ % 2 == 0) half.push_back(v);
+  PMP::smooth_surface_mesh_ilsa(half, m);
+  const auto before = points_of(original), after = points_of(m);
+  std::size_t moved = 0;
+  for (std::size_t k = 0; k < before.size(); ++k) {
+    if (k % 2 == 1) assert(before[k] == after[k]);
+    moved += !(before[k] == after[k]);
+  }
+  assert(moved > before.size() / 4);
+}
+
+// Constrained vertices do not move.
+template <class Mesh>
+void test_constrained_vertices() {
+  using vd = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
+  perturb_on_surface(original, 0.3, 12);
+  Mesh m = original;
+  std::map<vd, bool> fixed;
+  std::size_t i = 0;
+  for (auto v : vertices(m)) fixed[v] = (i++ % 3 == 0);
+  PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::vertex_is_constrained_map(boost::make_assoc_property_map(fixed)));
+  const auto before = points_of(original), after = points_of(m);
+  for (std::size_t k = 0; k < before.size(); k += 3) assert(before[k] == after[k]);
+}
+
+int main() {
+  test_perturbed_cube<Surface_mesh>();
+  test_perturbed_cube<Polyhedron>();
+  test_planar_grid<Surface_mesh>();
+  test_planar_grid<Polyhedron>();
+  test_fandisk<Surface_mesh>();
+  test_fandisk<Polyhedron>();
+  test_sphere<Surface_mesh>();
+  test_sphere<Polyhedron>();
+  test_mesh_types_agree();
+  test_vertex_order();
+  test_named_parameter_chaining<Surface_mesh>();
+  test_named_parameter_chaining<Polyhedron>();
+  test_vertex_range<Surface_mesh>();
+  test_vertex_range<Polyhedron>();
+  test_constrained_vertices<Surface_mesh>();
+  test_constrained_vertices<Polyhedron>();
+  std::cout << "test_ilsa_smoothing: all checks passed\n";
+  return 0;
+}
