@@ -33,20 +33,20 @@ namespace {
 struct Options {
   std::string input = std::string(ILSA_DATA_DIR) + "/horse.ply";
   std::string output;
-  unsigned int iterations = 10, relaxation_steps = 3;
-  double relax1 = 0.5, relax2 = 0.5, mu = 0.1, wl = 1., wa = 1., feature_angle = 160., quality_floor = 0.3;
+  unsigned int iterations = 20, relaxation_steps = 3;
+  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., quality_floor = 0.3;
   bool fix_unattached = true, project = true, safety = true, monotone = false, verbose = false;
 };
 
 const char* usage =
     "usage: ilsa_smooth [INPUT [OUTPUT]] [options]\n"
-    "  --iterations N          global iterations (default 10)\n"
+    "  --iterations N          global iterations (default 20)\n"
     "  --relaxation-steps N    sweeps per iteration (default 3)\n"
     "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
     "  --relax2 X              penalty relaxation, (0,1] (default 0.5)\n"
-    "  --mu X                  penalty parameter, > 0 (default 0.1)\n"
+    "  --mu X                  penalty parameter, > 0 (default 1)\n"
     "  --wl X                  length weight, >= 0 (default 1)\n"
-    "  --wa X                  area weight, >= 0 (default 1)\n"
+    "  --wa X                  area weight, >= 0 (default 0.1)\n"
     "  --feature-angle DEG     dihedral feature angle, (0,180] (default 160)\n"
     "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
     "  --no-project            do not project back onto the input surface\n"
@@ -132,6 +132,7 @@ int run(const Options& o) {
   std::cout << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces\n";
   print_quality("before", PMP::mesh_quality_ilsa(mesh));
 
+  const Mesh original = mesh;
   const auto start = std::chrono::steady_clock::now();
   const PMP::ILSA_statistics s = PMP::smooth_surface_mesh_ilsa(
       mesh, CGAL::parameters::number_of_iterations(o.iterations)
@@ -156,6 +157,13 @@ int run(const Options& o) {
             << "moves: " << s.number_of_moves << " accepted, " << s.number_of_shortened_moves << " shortened, "
             << s.number_of_rejected_moves << " rejected by the safety check\n"
             << std::setprecision(3) << "time: " << seconds << " s for " << s.number_of_iterations << " iterations\n";
+  const PMP::ILSA_fidelity_summary f = PMP::mesh_fidelity_ilsa(original, mesh, o.feature_angle);
+  std::cout << std::scientific << std::setprecision(2) << "fidelity: " << f.number_of_flipped_faces
+            << " flipped faces, vertex distance to input max " << f.max_vertex_distance << " mean "
+            << f.mean_vertex_distance << ", Hausdorff " << f.hausdorff_distance << ", sharp edges (" << f.number_of_sharp_edges
+            << ") deviation at vertices " << f.max_feature_vertex_deviation << " along edges " << f.max_feature_deviation;
+  if (f.closed) std::cout << ", volume change " << f.volume_change;
+  std::cout << " [distances relative to the bounding-box diagonal]\n";
 
   if (!o.output.empty()) {
     // Write next to the target, then rename: a failed write leaves no partial file.

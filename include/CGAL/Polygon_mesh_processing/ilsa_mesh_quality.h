@@ -7,7 +7,16 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_ILSA_MESH_QUALITY_H
 #define CGAL_POLYGON_MESH_PROCESSING_ILSA_MESH_QUALITY_H
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -175,6 +184,117 @@ template <class TriangleMesh, class NamedParameters = parameters::Default_named_
 ILSA_quality_summary mesh_quality_ilsa(const TriangleMesh& tm, double threshold = 0.3,
                                        const NamedParameters& np = parameters::default_values()) {
   return mesh_quality_ilsa(faces(tm), tm, threshold, np);
+}
+
+/// \ingroup PkgPMPILSARef
+/// How faithful a smoothed mesh is to its original (same connectivity).
+/// Distances are relative to the bounding-box diagonal of the original.
+struct ILSA_fidelity_summary {
+  std::size_t number_of_faces = 0;
+  std::size_t number_of_flipped_faces = 0;  ///< faces whose normal turned by more than 90 degrees
+  double max_vertex_distance = 0;           ///< largest distance of a smoothed vertex to the original surface
+  double mean_vertex_distance = 0;
+  double hausdorff_distance = 0;            ///< approximate symmetric Hausdorff distance (CGAL's, fixed seed)
+  bool closed = false;
+  double volume_change = 0;                 ///< (V_smoothed - V_original) / V_original, closed meshes only
+  std::size_t number_of_sharp_edges = 0;    ///< sharp edges of the original (dihedral angle below the feature angle)
+  double max_feature_vertex_deviation = 0;  ///< largest distance of an endpoint of a smoothed sharp edge to the original sharp edges
+  double max_feature_deviation = 0;         ///< largest distance of any point of a smoothed sharp edge (ends and 3 inner points) to the original sharp edges
+};
+
+/// \ingroup PkgPMPILSARef
+/// Compares `smoothed` with `original`, which must have the same vertices and
+/// faces in the same order (as `smooth_surface_mesh_ilsa()` leaves them).
+/// `feature_angle` is the dihedral angle in degrees below which an edge of
+/// `original` is sharp. The Hausdorff distance samples both meshes with
+/// CGAL's `approximate_symmetric_Hausdorff_distance()` and `random_seed(seed)`.
+template <class TriangleMesh>
+ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const TriangleMesh& smoothed,
+                                         double feature_angle = 160., unsigned int seed = 0) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using P = K::Point_3;
+  using Mesh = CGAL::Surface_mesh<P>;
+  ILSA_fidelity_summary r;
+
+  // Plain double copies, vertex and face order kept.
+  auto copy = [](const TriangleMesh& in) {
+    Mesh out;
+    CGAL::copy_face_graph(in, out);
+    return out;
+  };
+  const Mesh a = copy(original), b = copy(smoothed);
+  if (num_vertices(a) != num_vertices(b) || num_faces(a) != num_faces(b) || num_faces(a) == 0) return r;
+  r.number_of_faces = num_faces(a);
+
+  std::vector<P> pa(a.points().begin(), a.points().end()), pb(b.points().begin(), b.points().end());
+  const auto box = CGAL::bbox_3(pa.begin(), pa.end());
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const double scale = diagonal > 0 ? 1. / diagonal : 1.;
+
+  auto face_points = [](const Mesh& m, typename Mesh::Face_index f) {
+    const auto h = halfedge(f, m);
+    return std::array<P, 3>{m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m))};
+  };
+  auto normal = [&](const Mesh& m, typename Mesh::Face_index f) {
+    const auto t = face_points(m, f);
+    return CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+  };
+  for (auto fa = faces(a).begin(), fb = faces(b).begin(); fa != faces(a).end(); ++fa, ++fb)
+    if (normal(a, *fa) * normal(b, *fb) < 0) ++r.number_of_flipped_faces;
+
+  using Face_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  Face_tree tree(faces(a).first, faces(a).second, a);
+  for (const P& p : pb) {
+    const double d = std::sqrt(tree.squared_distance(p)) * scale;
+    r.max_vertex_distance = (std::max)(r.max_vertex_distance, d);
+    r.mean_vertex_distance += d;
+  }
+  r.mean_vertex_distance /= double(pb.size());
+
+  // In CGAL 5.5.1 random_seed does not reach every sampler (points inside a
+  // triangle and on edges come from the default generator), so that one is
+  // seeded too, and restored after: the distance is repeatable.
+  const CGAL::Random saved = CGAL::get_default_random();
+  CGAL::get_default_random() = CGAL::Random(seed);
+  const auto sampling = parameters::random_seed(seed).number_of_points_on_faces(2 * num_faces(a));
+  r.hausdorff_distance = approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, sampling, sampling) * scale;
+  CGAL::get_default_random() = saved;
+
+  r.closed = CGAL::is_closed(a);
+  if (r.closed) {
+    const double va = CGAL::to_double(volume(a)), vb = CGAL::to_double(volume(b));
+    r.volume_change = va != 0 ? (vb - va) / std::abs(va) : 0.;
+  }
+
+  // Sharp edges of the original; the same edges of the smoothed mesh are
+  // sampled (ends and three inner points) against them.
+  const double pi = 3.14159265358979323846;
+  const double sharp_cosine = std::cos(pi - feature_angle * pi / 180.);
+  std::vector<K::Segment_3> sharp;
+  std::vector<std::array<P, 2>> smoothed_sharp;
+  for (auto e : edges(a)) {
+    const auto h = halfedge(e, a);
+    if (is_border_edge(h, a)) continue;
+    auto n0 = normal(a, face(h, a)), n1 = normal(a, face(opposite(h, a), a));
+    const double l = std::sqrt(n0.squared_length() * n1.squared_length());
+    if (l == 0 || n0 * n1 / l >= sharp_cosine) continue;
+    sharp.emplace_back(a.point(source(h, a)), a.point(target(h, a)));
+    smoothed_sharp.push_back({pb[std::size_t(source(h, a))], pb[std::size_t(target(h, a))]});
+  }
+  r.number_of_sharp_edges = sharp.size();
+  if (!sharp.empty()) {
+    using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, typename std::vector<K::Segment_3>::const_iterator>>>;
+    Segment_tree lines(sharp.cbegin(), sharp.cend());
+    for (const auto& s : smoothed_sharp)
+      for (int k = 0; k <= 4; ++k) {
+        const P p = s[0] + (k / 4.) * (s[1] - s[0]);
+        const double d = std::sqrt(lines.squared_distance(p)) * scale;
+        r.max_feature_deviation = (std::max)(r.max_feature_deviation, d);
+        if (k == 0 || k == 4) r.max_feature_vertex_deviation = (std::max)(r.max_feature_vertex_deviation, d);
+      }
+  }
+  return r;
 }
 
 } // namespace Polygon_mesh_processing

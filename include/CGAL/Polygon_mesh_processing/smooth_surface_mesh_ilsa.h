@@ -71,7 +71,7 @@ namespace Polygon_mesh_processing {
  *   \cgalParamNBegin{number_of_iterations}
  *     \cgalParamDescription{the number of global iterations (the paper's max_global_iter_num)}
  *     \cgalParamType{unsigned int, at most 100000}
- *     \cgalParamDefault{`10`}
+ *     \cgalParamDefault{`20`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_relaxation_steps}
  *     \cgalParamDescription{the number of sweeps of the ILSA and of the penalty step in each iteration (max_smooth_iter_num); the sweeps stop early once no displacement changes by more than 1e-4 of the mean edge length}
@@ -91,7 +91,7 @@ namespace Polygon_mesh_processing {
  *   \cgalParamNBegin{ilsa_penalty_mu}
  *     \cgalParamDescription{the penalty parameter μ: the smaller, the more the penalty step keeps a vertex on the plane of its ILSA displacement}
  *     \cgalParamType{`double`, positive}
- *     \cgalParamDefault{`0.1`}
+ *     \cgalParamDefault{`1`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_length_weight}
  *     \cgalParamDescription{the weight wl of the edge-length term of the penalty step}
@@ -101,7 +101,7 @@ namespace Polygon_mesh_processing {
  *   \cgalParamNBegin{ilsa_area_weight}
  *     \cgalParamDescription{the weight wa of the squared-area ("soap film") term of the penalty step}
  *     \cgalParamType{`double`, non-negative}
- *     \cgalParamDefault{`1`}
+ *     \cgalParamDefault{`0.1`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_feature_angle}
  *     \cgalParamDescription{the feature (dihedral) angle θ_f in degrees, see `classify_vertices_ilsa()`}
@@ -174,14 +174,14 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   using VPM = typename GetVertexPointMap<TriangleMesh, NamedParameters>::type;
   using Point = typename boost::property_traits<VPM>::value_type;
   VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tm));
-  const auto iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 10);
+  const auto iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20);
   const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), 3);
   const double relax1 = choose_parameter(get_parameter(np, internal_np::ilsa_relaxation), 0.5);
   ilsa::Penalty_parameters penalty;
   penalty.relax2 = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), 0.5);
-  penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), 0.1);
+  penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), 1.);
   penalty.length_weight = choose_parameter(get_parameter(np, internal_np::ilsa_length_weight), 1.);
-  penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), 1.);
+  penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), 0.1);
   const bool do_project = choose_parameter(get_parameter(np, internal_np::do_project), true);
   const bool use_safety = choose_parameter(get_parameter(np, internal_np::use_safety_constraints), true);
   const double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), 0.3);

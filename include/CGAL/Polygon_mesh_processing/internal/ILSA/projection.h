@@ -8,11 +8,13 @@
 //
 // Sheet guard: every vertex remembers the original face (or sharp edge) it lies
 // on, its "home". A closest point is accepted only if it lies on a face sharing
-// a vertex with the home face (on a sharp edge of the same crease sharing an
-// endpoint with the home edge). Otherwise the AABB answer belongs to another
-// sheet (thin plate, parallel sheets, the other side of a slot) or another
-// crease, and the vertex is projected onto that neighbourhood instead, so it
-// can only travel across the surface, never through space.
+// a vertex with the home face and on the same side of every crease (the same
+// patch: faces connected without crossing a sharp edge), or for a ridge vertex
+// on a sharp edge of the same crease sharing an endpoint with the home edge.
+// Otherwise the AABB answer belongs to another sheet (thin plate, parallel
+// sheets, the other side of a slot or of a crease) or another crease, and the
+// vertex is projected onto that neighbourhood instead, so it can only travel
+// across its own patch of the surface, never through space.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
@@ -57,6 +59,19 @@ public:
     for (const auto& f : m_.faces) triangles_.emplace_back(point(m_.points[f[0]]), point(m_.points[f[1]]), point(m_.points[f[2]]));
     if (!triangles_.empty()) face_tree_.rebuild(triangles_.cbegin(), triangles_.cend());
 
+    // Patches: faces connected across non-sharp edges (union-find).
+    patch_.resize(m_.number_of_faces());
+    for (std::size_t f = 0; f < patch_.size(); ++f) patch_[f] = f;
+    auto find = [this](std::size_t f) {
+      while (patch_[f] != f) f = patch_[f] = patch_[patch_[f]];
+      return f;
+    };
+    for (std::size_t e = 0; e < m_.edges.size(); ++e) {
+      const auto& fs = m_.edge_faces[e];
+      if (fs[0] != npos && fs[1] != npos && !c_.sharp_edge[e]) patch_[find(fs[0])] = find(fs[1]);
+    }
+    for (std::size_t f = 0; f < patch_.size(); ++f) patch_[f] = find(f);
+
     edge_to_segment_.assign(m_.edges.size(), npos);
     for (std::size_t e = 0; e < m_.edges.size(); ++e) {
       if (c_.crease_of_edge[e] == npos) continue;
@@ -84,11 +99,12 @@ private:
   static Point point(const Vec3& p) { return Point(p.x(), p.y(), p.z()); }
   static Vec3 vec(const Point& p) { return Vec3(p.x(), p.y(), p.z()); }
 
-  // Faces sharing a vertex with face `home`.
+  // Faces sharing a vertex with face `home`, in its patch.
   template <class F>
   void for_each_face_near(std::size_t home, F f) const {
     for (std::size_t w : m_.faces[home])
-      for (const std::size_t* g = m_.vertex_faces.first(w); g != m_.vertex_faces.last(w); ++g) f(*g);
+      for (const std::size_t* g = m_.vertex_faces.first(w); g != m_.vertex_faces.last(w); ++g)
+        if (patch_[*g] == patch_[home]) f(*g);
   }
 
   // Sharp edges of the same crease sharing an endpoint with edge `home`.
@@ -145,6 +161,7 @@ private:
   std::vector<Segment> segments_;
   std::vector<std::size_t> segment_edge_;    // segment -> edge
   std::vector<std::size_t> edge_to_segment_; // edge -> segment, npos if not sharp
+  std::vector<std::size_t> patch_;           // face -> representative face of its patch
   Face_tree face_tree_;
   Crease_tree crease_tree_;
 };
