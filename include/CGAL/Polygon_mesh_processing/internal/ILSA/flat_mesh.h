@@ -18,6 +18,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -147,27 +148,53 @@ Flat_mesh build_flat_mesh(
   }
   m.vertex_faces.assign(nv, incidences);
 
+  // Edges in a canonical order (by endpoint indices, lower index first, the
+  // face on the lower-to-higher halfedge first), whatever order the graph
+  // lists them in: meshes of different types with the same vertices and faces
+  // give bit-identical results.
+  struct Edge_record {
+    std::size_t a, b, f0, f1, descriptor;
+  };
+  const std::vector<typename GT::edge_descriptor> graph_edges(edges(tm).begin(), edges(tm).end());
+  std::vector<Edge_record> records;
+  records.reserve(graph_edges.size());
+  for (std::size_t k = 0; k < graph_edges.size(); ++k) {
+    auto h = halfedge(graph_edges[k], tm);
+    if (vertex_index.at(source(h, tm)) > vertex_index.at(target(h, tm))) h = opposite(h, tm);
+    const face_descriptor f0 = face(h, tm), f1 = face(opposite(h, tm), tm);
+    records.push_back({vertex_index.at(source(h, tm)), vertex_index.at(target(h, tm)),
+                       f0 == GT::null_face() ? npos : face_index.at(f0),
+                       f1 == GT::null_face() ? npos : face_index.at(f1), k});
+  }
+  std::sort(records.begin(), records.end(),
+            [](const Edge_record& x, const Edge_record& y) { return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b); });
+
+  m.on_border.assign(nv, 0);
+  edge_list.clear();
   incidences.clear();
   std::vector<std::pair<std::size_t, std::size_t>> vertex_edge_pairs;
-  m.on_border.assign(nv, 0);
-  edge_list.assign(edges(tm).begin(), edges(tm).end());
-  for (const auto& e : edge_list) {
-    const auto h = halfedge(e, tm);
-    const std::size_t a = vertex_index.at(source(h, tm)), b = vertex_index.at(target(h, tm));
-    const face_descriptor f0 = face(h, tm), f1 = face(opposite(h, tm), tm);
-    const std::size_t i0 = f0 == GT::null_face() ? npos : face_index.at(f0);
-    const std::size_t i1 = f1 == GT::null_face() ? npos : face_index.at(f1);
-    if (i0 == npos || i1 == npos) m.on_border[a] = m.on_border[b] = 1;
+  for (const Edge_record& r : records) {
+    if (r.f0 == npos || r.f1 == npos) m.on_border[r.a] = m.on_border[r.b] = 1;
     const std::size_t ei = m.edges.size();
-    m.edges.push_back({a, b});
-    m.edge_faces.push_back({i0, i1});
-    incidences.emplace_back(a, b);
-    incidences.emplace_back(b, a);
-    vertex_edge_pairs.emplace_back(a, ei);
-    vertex_edge_pairs.emplace_back(b, ei);
+    m.edges.push_back({r.a, r.b});
+    m.edge_faces.push_back({r.f0, r.f1});
+    edge_list.push_back(graph_edges[r.descriptor]);
+    incidences.emplace_back(r.a, r.b);
+    incidences.emplace_back(r.b, r.a);
+    vertex_edge_pairs.emplace_back(r.a, ei);
+    vertex_edge_pairs.emplace_back(r.b, ei);
   }
-  m.vertex_neighbors.assign(nv, incidences);
-  m.vertex_edges.assign(nv, vertex_edge_pairs);
+  // One-ring neighbours in increasing index order.
+  std::vector<std::size_t> order(incidences.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return incidences[x] < incidences[y]; });
+  std::vector<std::pair<std::size_t, std::size_t>> sorted_incidences(order.size()), sorted_edges(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    sorted_incidences[k] = incidences[order[k]];
+    sorted_edges[k] = vertex_edge_pairs[order[k]];
+  }
+  m.vertex_neighbors.assign(nv, sorted_incidences);
+  m.vertex_edges.assign(nv, sorted_edges);
 
   // A vertex whose faces do not all lie in one umbrella is non-manifold.
   m.non_manifold.assign(nv, 0);
