@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
@@ -167,7 +168,13 @@ int run(const Options& o) {
 
   if (!o.output.empty()) {
     // Write next to the target, then rename: a failed write leaves no partial file.
-    const std::string temporary = o.output + ".ilsa-partial";
+    // The temporary keeps the extension, which selects the format.
+    const std::size_t dot = o.output.find_last_of('.');
+    const std::size_t slash = o.output.find_last_of('/');
+    const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+    const std::string temporary = has_extension ? o.output.substr(0, dot) + ".ilsa-partial" + o.output.substr(dot)
+                                                : o.output + ".ilsa-partial";
+    if (!std::ofstream(temporary)) throw std::runtime_error("cannot write '" + o.output + "'");
     if (!CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17))) {
       std::remove(temporary.c_str());
       throw std::runtime_error("cannot write '" + o.output + "'");

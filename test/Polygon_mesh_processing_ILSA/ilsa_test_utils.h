@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cassert>
+#include <cstdlib>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -27,6 +28,16 @@
 #include <random>
 #include <string>
 #include <vector>
+
+// A check that stays active when NDEBUG is defined (the bad-input test is
+// also built with NDEBUG to show the package does not rely on assertions).
+#define ILSA_CHECK(condition)                                                                      \
+  do {                                                                                             \
+    if (!(condition)) {                                                                            \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << std::endl;    \
+      std::abort();                                                                                \
+    }                                                                                              \
+  } while (false)
 
 namespace ilsa_test {
 
@@ -45,7 +56,7 @@ template <class Mesh>
 Mesh to_mesh(const Soup& soup) {
   Mesh m;
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.triangles, m);
-  assert(CGAL::is_valid_polygon_mesh(m));
+  ILSA_CHECK(CGAL::is_valid_polygon_mesh(m));
   return m;
 }
 
@@ -249,7 +260,7 @@ template <class Mesh>
 Mesh read_mesh(const std::string& path) {
   Mesh m;
   const bool ok = CGAL::IO::read_polygon_mesh(path, m);
-  assert(ok && !is_empty(m));
+  ILSA_CHECK(ok && !is_empty(m));
   CGAL_USE(ok);
   return m;
 }

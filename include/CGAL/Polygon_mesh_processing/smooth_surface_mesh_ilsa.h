@@ -28,10 +28,20 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+// Keeps `smooth_surface_mesh_ilsa(tm, np)` unambiguous when `np` is a non-const lvalue.
+template <class T>
+struct is_named_parameters : std::false_type {};
+template <class T, class Tag, class Base>
+struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std::true_type {};
+} // namespace ILSA
+} // namespace internal
 
 /*!
  * \ingroup PkgPMPILSARef
@@ -161,7 +171,8 @@ namespace Polygon_mesh_processing {
  *      and non-manifold vertices, several connected components and
  *      self-intersections are accepted: isolated and non-manifold vertices are fixed.
  */
-template <typename VertexRange, typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+template <typename VertexRange, typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters,
+          typename = std::enable_if_t<!internal::ILSA::is_named_parameters<TriangleMesh>::value>>
 ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMesh& tm,
                                          const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
