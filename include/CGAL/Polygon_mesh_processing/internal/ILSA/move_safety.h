@@ -37,24 +37,19 @@ public:
   /// vertex's star below this value (1: never lower it, the quality-monotone mode).
   Move_safety(const Flat_mesh& original, double quality_floor, std::size_t halvings)
       : m_(original), quality_floor_(quality_floor), halvings_(halvings) {
-    // Reference orientation of each face: its input normal, except for a face
-    // that is degenerate or folded in the input (opposite to every
-    // edge-adjacent face): then the sum of its neighbours' normals, so that
-    // such a face counts as already flipped and moves that unfold it are allowed.
+    // Reference orientation of each face: its input normal, or for a face that
+    // is degenerate in the input the sum of its neighbours' normals. A face
+    // folded in the input keeps its orientation: unfolding it would be a flip
+    // with respect to the input, which the package never makes.
     std::vector<Vec3> own(m_.number_of_faces()), neighbors(m_.number_of_faces(), Vec3::Zero());
-    std::vector<unsigned char> agrees(m_.number_of_faces(), 0);
     for (std::size_t f = 0; f < m_.number_of_faces(); ++f) own[f] = unit_normal(m_.points, m_.faces[f]);
     for (const auto& fs : m_.edge_faces)
       if (fs[0] != npos && fs[1] != npos) {
         neighbors[fs[0]] += own[fs[1]];
         neighbors[fs[1]] += own[fs[0]];
-        if (own[fs[0]].dot(own[fs[1]]) >= 0) agrees[fs[0]] = agrees[fs[1]] = 1;
       }
     reference_.resize(m_.number_of_faces());
-    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      const bool folded = !agrees[f] && neighbors[f].dot(own[f]) < 0;
-      reference_[f] = own[f].isZero(0) || folded ? neighbors[f] : own[f];
-    }
+    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) reference_[f] = own[f].isZero(0) ? neighbors[f] : own[f];
     stamp_.assign(m_.number_of_faces(), 0);
     tries_.assign(m_.number_of_vertices(), 0);
     checked_.assign(m_.number_of_vertices(), 0);
