@@ -2,7 +2,8 @@
 # Parameter sweep behind the defaults of smooth_surface_mesh_ilsa (see the user
 # manual). Runs the ilsa_smooth tool over a grid of parameter values on the
 # given meshes and prints one line per run: mesh, parameters, q min, q mean,
-# share of q < 0.3, minimum angle, time.
+# share of q < 0.3, minimum angle, flipped faces, Hausdorff distance (relative
+# to the bounding-box diagonal), fixed vertices, time.
 #
 #   benchmark/sweep_parameters.sh BUILD_DIR [MESH ...]
 #
@@ -15,19 +16,19 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 meshes=("$@")
 [ ${#meshes[@]} -gt 0 ] || meshes=("$here"/data/meshes/*.off "$here"/data/meshes/*.ply)
 
-ITERATIONS=${ITERATIONS:-"10"}
+ITERATIONS=${ITERATIONS:-"20"}
 STEPS=${STEPS:-"3"}
 RELAX1=${RELAX1:-"0.5"}
 RELAX2=${RELAX2:-"0.5"}
-MU=${MU:-"0.1"}
+MU=${MU:-"1"}
 WL=${WL:-"1"}
-WA=${WA:-"1"}
+WA=${WA:-"0.1"}
 ANGLE=${ANGLE:-"160"}
 UNATTACHED=${UNATTACHED:-"1"}
 FLOOR=${FLOOR:-"0.3"}
 
-printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %5s | %7s %7s %7s %7s %7s\n' \
-  mesh iter steps relax1 relax2 mu wl wa angle fix floor q_min q_mean 'q<0.3%' min_ang time_s
+printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %5s | %7s %7s %7s %7s %4s %9s %6s %7s\n' \
+  mesh iter steps relax1 relax2 mu wl wa angle fix floor q_min q_mean 'q<0.3%' min_ang flip hausdorff fixed time_s
 for mesh in "${meshes[@]}"; do
 for it in $ITERATIONS; do for st in $STEPS; do for r1 in $RELAX1; do for r2 in $RELAX2; do
 for mu in $MU; do for wl in $WL; do for wa in $WA; do for an in $ANGLE; do for fx in $UNATTACHED; do for fl in $FLOOR; do
@@ -39,7 +40,11 @@ for mu in $MU; do for wl in $WL; do for wa in $WA; do for an in $ANGLE; do for f
   below=$(sed -E 's/.*q<0.3 ([0-9.]+) %.*/\1/' <<<"$after")
   angle=$(sed -E 's/.*min angle ([0-9.]+) deg.*/\1/' <<<"$after")
   secs=$(grep '^time' <<<"$out" | sed -E 's/time: ([0-9.]+) s.*/\1/')
-  printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %5s | %7s %7s %7s %7s %7s\n' \
-    "$(basename "$mesh")" "$it" "$st" "$r1" "$r2" "$mu" "$wl" "$wa" "$an" "$fx" "$fl" "$qmin" "$qmean" "$below" "$angle" "$secs"
+  flips=$(grep '^fidelity' <<<"$out" | sed -E 's/fidelity: ([0-9]+) flipped.*/\1/')
+  haus=$(grep '^fidelity' <<<"$out" | sed -E 's/.*Hausdorff ([0-9.e+-]+),.*/\1/')
+  fixed=$(grep '^vertices' <<<"$out" | sed -E 's/.* ([0-9]+) corner, ([0-9]+) boundary/\1+\2/')
+  printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %5s | %7s %7s %7s %7s %4s %9s %6s %7s\n' \
+    "$(basename "$mesh")" "$it" "$st" "$r1" "$r2" "$mu" "$wl" "$wa" "$an" "$fx" "$fl" "$qmin" "$qmean" "$below" "$angle" \
+    "$flips" "$haus" "$((fixed))" "$secs"
 done; done; done; done; done; done; done; done; done; done
 done

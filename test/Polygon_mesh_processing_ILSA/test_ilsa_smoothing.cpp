@@ -6,6 +6,7 @@
 #include "ilsa_test_utils.h"
 
 #include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 
 using namespace ilsa_test;
@@ -206,7 +207,59 @@ void test_constrained_vertices() {
   for (std::size_t k = 0; k < before.size(); k += 3) assert(before[k] == after[k]);
 }
 
+// Projection cannot jump between sheets: a thin shell made of two concentric
+// copies of a sphere, 0.2 % of the radius apart, far less than the inward
+// pull of a Laplacian step on it. Every vertex must stay on its own sheet.
+template <class Mesh>
+void test_thin_shell() {
+  const Surface_mesh sphere = read_mesh<Surface_mesh>(data_file("sphere_low.off"));
+  Soup soup;
+  soup.points = points_of(sphere);
+  for (auto f : faces(sphere)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for (auto v : vertices_around_face(halfedge(f, sphere), sphere)) t[k++] = std::size_t(v);
+    soup.triangles.push_back(t);
+  }
+  const std::size_t n = soup.points.size(), nf = soup.triangles.size();
+  const auto box = CGAL::bounding_box(soup.points.begin(), soup.points.end());
+  const Point center = CGAL::midpoint(box.min(), box.max());
+  for (std::size_t i = 0; i < n; ++i) soup.points.push_back(center + 0.998 * (soup.points[i] - center));
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto t = soup.triangles[f];
+    soup.triangles.push_back({t[0] + n, t[2] + n, t[1] + n}); // inner sheet faces inward
+  }
+  Mesh original = to_mesh<Mesh>(soup);
+  perturb_on_surface(original, 0.5, 13);
+  Mesh m = original;
+  const auto stats = PMP::smooth_surface_mesh_ilsa(m);
+
+  // Distance of each vertex to its own sheet of the input.
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::iterator>>>;
+  std::vector<K::Triangle_3> outer, inner;
+  const auto p0 = points_of(original);
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t> index;
+  for (auto v : vertices(original)) index.emplace(v, index.size());
+  for (auto f : faces(original)) {
+    std::vector<std::size_t> ids;
+    for (auto v : vertices_around_face(halfedge(f, original), original)) ids.push_back(index[v]);
+    (ids[0] < n ? outer : inner).emplace_back(p0[ids[0]], p0[ids[1]], p0[ids[2]]);
+  }
+  Tree outer_tree(outer.begin(), outer.end()), inner_tree(inner.begin(), inner.end());
+  const auto p1 = points_of(m);
+  const double tolerance = on_surface * bbox_diagonal(original);
+  double worst = 0;
+  for (std::size_t i = 0; i < p1.size(); ++i)
+    worst = (std::max)(worst, std::sqrt((i < n ? outer_tree : inner_tree).squared_distance(p1[i])));
+  std::cout << "thin shell: largest distance to the own sheet " << worst << ", guarded projections "
+            << stats.number_of_guarded_projections << std::endl;
+  assert(worst <= tolerance);
+  assert(stats.number_of_guarded_projections > 0); // the guard had work to do
+}
+
 int main() {
+  test_thin_shell<Surface_mesh>();
+  test_thin_shell<Polyhedron>();
   test_perturbed_cube<Surface_mesh>();
   test_perturbed_cube<Polyhedron>();
   test_planar_grid<Surface_mesh>();
