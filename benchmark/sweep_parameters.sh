@@ -25,7 +25,7 @@ WL=${WL:-"1"}
 WA=${WA:-"0.1"}
 ANGLE=${ANGLE:-"160"}
 UNATTACHED=${UNATTACHED:-"1"}
-FLOOR=${FLOOR:-"0.3"}
+FLOOR=${FLOOR:-"0.5"}
 
 printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %5s | %7s %7s %7s %7s %4s %9s %6s %7s\n' \
   mesh iter steps relax1 relax2 mu wl wa angle fix floor q_min q_mean 'q<0.3%' min_ang flip hausdorff fixed time_s

@@ -35,7 +35,7 @@ struct Options {
   std::string input = std::string(ILSA_DATA_DIR) + "/horse.ply";
   std::string output;
   unsigned int iterations = 20, relaxation_steps = 3;
-  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., quality_floor = 0.3;
+  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., quality_floor = 0.5;
   bool fix_unattached = true, project = true, safety = true, monotone = false, verbose = false;
 };
 
@@ -52,7 +52,7 @@ const char* usage =
     "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
     "  --no-project            do not project back onto the input surface\n"
     "  --no-safety             no inversion check after projection\n"
-    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1) (default 0.3)\n"
+    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1) (default 0.5)\n"
     "  --quality-monotone      reject moves that lower the star's minimum quality\n"
     "  --verbose               print what each iteration does\n";
 

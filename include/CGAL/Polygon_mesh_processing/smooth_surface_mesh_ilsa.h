@@ -146,7 +146,7 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *   \cgalParamNBegin{ilsa_quality_floor}
  *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it lowers the minimum aspect ratio of the vertex's star to a value below this floor. 0 disables this part of the check}
  *     \cgalParamType{`double`, in [0, 1)}
- *     \cgalParamDefault{`0.3`}
+ *     \cgalParamDefault{`0.5`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_quality_monotone}
  *     \cgalParamDescription{with the safety check on, shorten or drop every move that lowers the minimum aspect ratio of the vertex's star (the same as a quality floor of 1)}
@@ -195,7 +195,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), 0.1);
   const bool do_project = choose_parameter(get_parameter(np, internal_np::do_project), true);
   const bool use_safety = choose_parameter(get_parameter(np, internal_np::use_safety_constraints), true);
-  const double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), 0.3);
+  const double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), 0.5);
   const bool quality_monotone = choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), false);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   // (ilsa_feature_angle, ilsa_fix_unattached_candidates and the constraint
