@@ -79,9 +79,12 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--peer-iterations" && i + 1 < argc) peer_iterations = unsigned(std::max(1, std::atoi(argv[++i])));
-    else files.push_back(a);
+    if (a == "--runs" && i + 1 < argc)
+      runs = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--peer-iterations" && i + 1 < argc)
+      peer_iterations = unsigned(std::max(1, std::atoi(argv[++i])));
+    else
+      files.push_back(a);
   }
   if (files.empty()) files = default_meshes();
 
@@ -123,29 +126,36 @@ int main(int argc, char** argv) {
 
     std::vector<Method> methods;
     methods.push_back({"ILSA (defaults)", [](Mesh& m) { PMP::smooth_surface_mesh_ilsa(m); }, 20});
-    methods.push_back({"CGAL angle smoothing + sharp edges", [&](Mesh& m) {
+    methods.push_back({"CGAL angle smoothing + sharp edges",
+                       [&](Mesh& m) {
                          auto ecm = with_constraints(m);
                          PMP::angle_and_area_smoothing(m, CGAL::parameters::number_of_iterations(peer_iterations)
                                                               .use_area_smoothing(false)
                                                               .use_Delaunay_flips(false)
                                                               .edge_is_constrained_map(ecm));
-                       }, peer_iterations});
+                       },
+                       peer_iterations});
     if (ceres)
-      methods.push_back({"CGAL angle+area smoothing + sharp edges", [&](Mesh& m) {
+      methods.push_back({"CGAL angle+area smoothing + sharp edges",
+                         [&](Mesh& m) {
                            auto ecm = with_constraints(m);
                            PMP::angle_and_area_smoothing(m, CGAL::parameters::number_of_iterations(peer_iterations)
                                                                 .use_Delaunay_flips(false)
                                                                 .edge_is_constrained_map(ecm));
-                         }, peer_iterations});
-    methods.push_back({"CGAL tangential relaxation", [&](Mesh& m) {
-                         PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(peer_iterations));
-                       }, peer_iterations});
-    methods.push_back({"CGAL tangential relaxation + sharp edges", [&](Mesh& m) {
+                         },
+                         peer_iterations});
+    methods.push_back(
+        {"CGAL tangential relaxation",
+         [&](Mesh& m) { PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(peer_iterations)); },
+         peer_iterations});
+    methods.push_back({"CGAL tangential relaxation + sharp edges",
+                       [&](Mesh& m) {
                          auto ecm = with_constraints(m);
                          PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(peer_iterations)
                                                            .edge_is_constrained_map(ecm)
                                                            .relax_constraints(true));
-                       }, peer_iterations});
+                       },
+                       peer_iterations});
 
     const auto q0 = PMP::mesh_quality_ilsa(input);
     std::printf("| %s | input | %.4f | %.4f | %.2f | %.2f | | | | | | | | |\n", name.c_str(), q0.min_aspect_ratio,

@@ -39,22 +39,21 @@ struct Options {
   bool fix_unattached = true, project = true, safety = true, monotone = false, verbose = false;
 };
 
-const char* usage =
-    "usage: ilsa_smooth [INPUT [OUTPUT]] [options]\n"
-    "  --iterations N          global iterations (default 20)\n"
-    "  --relaxation-steps N    sweeps per iteration (default 3)\n"
-    "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
-    "  --relax2 X              penalty relaxation, (0,1] (default 0.5)\n"
-    "  --mu X                  penalty parameter, > 0 (default 1)\n"
-    "  --wl X                  length weight, >= 0 (default 1)\n"
-    "  --wa X                  area weight, >= 0 (default 0.1)\n"
-    "  --feature-angle DEG     dihedral feature angle, (0,180] (default 160)\n"
-    "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
-    "  --no-project            do not project back onto the input surface\n"
-    "  --no-safety             no inversion check after projection\n"
-    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1) (default 0.5)\n"
-    "  --quality-monotone      reject moves that lower the star's minimum quality\n"
-    "  --verbose               print what each iteration does\n";
+const char* usage = "usage: ilsa_smooth [INPUT [OUTPUT]] [options]\n"
+                    "  --iterations N          global iterations (default 20)\n"
+                    "  --relaxation-steps N    sweeps per iteration (default 3)\n"
+                    "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
+                    "  --relax2 X              penalty relaxation, (0,1] (default 0.5)\n"
+                    "  --mu X                  penalty parameter, > 0 (default 1)\n"
+                    "  --wl X                  length weight, >= 0 (default 1)\n"
+                    "  --wa X                  area weight, >= 0 (default 0.1)\n"
+                    "  --feature-angle DEG     dihedral feature angle, (0,180] (default 160)\n"
+                    "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
+                    "  --no-project            do not project back onto the input surface\n"
+                    "  --no-safety             no inversion check after projection\n"
+                    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1) (default 0.5)\n"
+                    "  --quality-monotone      reject moves that lower the star's minimum quality\n"
+                    "  --verbose               print what each iteration does\n";
 
 double parse_number(const std::string& flag, const std::string& text) {
   std::size_t used = 0;
@@ -90,8 +89,10 @@ Options parse(int argc, char** argv) {
       {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
       {"--fix-unattached", [&](const std::string& s) { o.fix_unattached = parse_count("--fix-unattached", s) != 0; }},
   };
-  std::map<std::string, bool*> switches{{"--no-project", nullptr}, {"--no-safety", nullptr},
-                                        {"--quality-monotone", &o.monotone}, {"--verbose", &o.verbose}};
+  std::map<std::string, bool*> switches{{"--no-project", nullptr},
+                                        {"--no-safety", nullptr},
+                                        {"--quality-monotone", &o.monotone},
+                                        {"--verbose", &o.verbose}};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-h" || arg == "--help") {
@@ -135,21 +136,21 @@ int run(const Options& o) {
 
   const Mesh original = mesh;
   const auto start = std::chrono::steady_clock::now();
-  const PMP::ILSA_statistics s = PMP::smooth_surface_mesh_ilsa(
-      mesh, CGAL::parameters::number_of_iterations(o.iterations)
-                .number_of_relaxation_steps(o.relaxation_steps)
-                .ilsa_relaxation(o.relax1)
-                .ilsa_penalty_relaxation(o.relax2)
-                .ilsa_penalty_mu(o.mu)
-                .ilsa_length_weight(o.wl)
-                .ilsa_area_weight(o.wa)
-                .ilsa_feature_angle(o.feature_angle)
-                .ilsa_fix_unattached_candidates(o.fix_unattached)
-                .do_project(o.project)
-                .use_safety_constraints(o.safety)
-                .ilsa_quality_floor(o.quality_floor)
-                .ilsa_quality_monotone(o.monotone)
-                .verbose(o.verbose));
+  const PMP::ILSA_statistics s =
+      PMP::smooth_surface_mesh_ilsa(mesh, CGAL::parameters::number_of_iterations(o.iterations)
+                                              .number_of_relaxation_steps(o.relaxation_steps)
+                                              .ilsa_relaxation(o.relax1)
+                                              .ilsa_penalty_relaxation(o.relax2)
+                                              .ilsa_penalty_mu(o.mu)
+                                              .ilsa_length_weight(o.wl)
+                                              .ilsa_area_weight(o.wa)
+                                              .ilsa_feature_angle(o.feature_angle)
+                                              .ilsa_fix_unattached_candidates(o.fix_unattached)
+                                              .do_project(o.project)
+                                              .use_safety_constraints(o.safety)
+                                              .ilsa_quality_floor(o.quality_floor)
+                                              .ilsa_quality_monotone(o.monotone)
+                                              .verbose(o.verbose));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   print_quality("after ", PMP::mesh_quality_ilsa(mesh));
@@ -161,8 +162,9 @@ int run(const Options& o) {
   const PMP::ILSA_fidelity_summary f = PMP::mesh_fidelity_ilsa(original, mesh, o.feature_angle);
   std::cout << std::scientific << std::setprecision(2) << "fidelity: " << f.number_of_flipped_faces
             << " flipped faces, vertex distance to input max " << f.max_vertex_distance << " mean "
-            << f.mean_vertex_distance << ", Hausdorff " << f.hausdorff_distance << ", sharp edges (" << f.number_of_sharp_edges
-            << ") deviation at vertices " << f.max_feature_vertex_deviation << " along edges " << f.max_feature_deviation;
+            << f.mean_vertex_distance << ", Hausdorff " << f.hausdorff_distance << ", sharp edges ("
+            << f.number_of_sharp_edges << ") deviation at vertices " << f.max_feature_vertex_deviation
+            << " along edges " << f.max_feature_deviation;
   if (f.closed) std::cout << ", volume change " << f.volume_change;
   std::cout << " [distances relative to the bounding-box diagonal]\n";
 
@@ -172,8 +174,8 @@ int run(const Options& o) {
     const std::size_t dot = o.output.find_last_of('.');
     const std::size_t slash = o.output.find_last_of('/');
     const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-    const std::string temporary = has_extension ? o.output.substr(0, dot) + ".ilsa-partial" + o.output.substr(dot)
-                                                : o.output + ".ilsa-partial";
+    const std::string temporary =
+        has_extension ? o.output.substr(0, dot) + ".ilsa-partial" + o.output.substr(dot) : o.output + ".ilsa-partial";
     if (!std::ofstream(temporary)) throw std::runtime_error("cannot write '" + o.output + "'");
     if (!CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17))) {
       std::remove(temporary.c_str());

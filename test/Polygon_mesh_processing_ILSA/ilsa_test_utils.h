@@ -31,12 +31,12 @@
 
 // A check that stays active when NDEBUG is defined (the bad-input test is
 // also built with NDEBUG to show the package does not rely on assertions).
-#define ILSA_CHECK(condition)                                                                      \
-  do {                                                                                             \
-    if (!(condition)) {                                                                            \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << std::endl;    \
-      std::abort();                                                                                \
-    }                                                                                              \
+#define ILSA_CHECK(condition)                                                                                          \
+  do {                                                                                                                 \
+    if (!(condition)) {                                                                                                \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << std::endl;                          \
+      std::abort();                                                                                                    \
+    }                                                                                                                  \
   } while (false)
 
 namespace ilsa_test {
@@ -52,8 +52,7 @@ struct Soup {
   std::vector<std::array<std::size_t, 3>> triangles;
 };
 
-template <class Mesh>
-Mesh to_mesh(const Soup& soup) {
+template <class Mesh> Mesh to_mesh(const Soup& soup) {
   Mesh m;
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.triangles, m);
   ILSA_CHECK(CGAL::is_valid_polygon_mesh(m));
@@ -139,8 +138,7 @@ inline void perturb_grid(Soup& s, int n, double amount, unsigned seed, double si
 /// Moves every vertex a random fraction of the way toward a random point of a
 /// random incident triangle: it stays on the input surface, and a fraction
 /// below 1/3 of the way to that point cannot fold the star.
-template <class Mesh>
-void perturb_on_surface(Mesh& m, double amount, unsigned seed) {
+template <class Mesh> void perturb_on_surface(Mesh& m, double amount, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> unit(0., 1.);
   std::vector<std::pair<typename boost::graph_traits<Mesh>::vertex_descriptor, Point>> moves;
@@ -181,11 +179,23 @@ void perturb_on_surface(Mesh& m, double amount, unsigned seed) {
   }
 }
 
-template <class Mesh>
-std::vector<Point> points_of(const Mesh& m) {
+template <class Mesh> std::vector<Point> points_of(const Mesh& m) {
   std::vector<Point> p;
   for (auto v : vertices(m)) p.push_back(get(CGAL::vertex_point, m, v));
   return p;
+}
+
+/// The points and triangles of a Surface_mesh without removed elements, in index order.
+inline Soup soup_of(const Surface_mesh& m) {
+  Soup soup;
+  soup.points = points_of(m);
+  for (auto f : faces(m)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for (auto v : vertices_around_face(halfedge(f, m), m)) t[k++] = std::size_t(v);
+    soup.triangles.push_back(t);
+  }
+  return soup;
 }
 
 template <class Mesh>
@@ -200,15 +210,13 @@ std::vector<PMP::ILSA_vertex_type> types_of(const Mesh& m, std::map<std::string,
   return t;
 }
 
-template <class Mesh>
-double bbox_diagonal(const Mesh& m) {
+template <class Mesh> double bbox_diagonal(const Mesh& m) {
   const auto pts = points_of(m);
   const auto box = CGAL::bounding_box(pts.begin(), pts.end());
   return std::sqrt(CGAL::squared_distance(box.min(), box.max()));
 }
 
-template <class Mesh>
-std::vector<K::Vector_3> face_normals_of(const Mesh& m) {
+template <class Mesh> std::vector<K::Vector_3> face_normals_of(const Mesh& m) {
   std::vector<K::Vector_3> n;
   for (auto f : faces(m)) {
     const auto h = halfedge(f, m);
@@ -223,9 +231,9 @@ std::vector<K::Vector_3> face_normals_of(const Mesh& m) {
 /// What a smoothing run must keep. `on_crease(i, p)` tells whether point `p`
 /// of ridge vertex `i` is on its original crease line.
 struct Invariant_report {
-  double max_distance = 0;        // relative to the bounding-box diagonal
+  double max_distance = 0; // relative to the bounding-box diagonal
   std::size_t flipped = 0;
-  std::size_t fixed_moved = 0;    // boundary or corner vertices whose point changed
+  std::size_t fixed_moved = 0; // boundary or corner vertices whose point changed
   std::size_t ridge_off_crease = 0;
   double mean_q_before = 0, mean_q_after = 0;
 };
@@ -254,10 +262,11 @@ Invariant_report check_invariants(const Mesh& original, const Mesh& smoothed, On
   return r;
 }
 
-inline std::string data_file(const std::string& name) { return std::string(ILSA_DATA_DIR) + "/" + name; }
+inline std::string data_file(const std::string& name) {
+  return std::string(ILSA_DATA_DIR) + "/" + name;
+}
 
-template <class Mesh>
-Mesh read_mesh(const std::string& path) {
+template <class Mesh> Mesh read_mesh(const std::string& path) {
   Mesh m;
   const bool ok = CGAL::IO::read_polygon_mesh(path, m);
   ILSA_CHECK(ok && !is_empty(m));

@@ -10,8 +10,7 @@
 
 using namespace ilsa_test;
 
-template <class Mesh>
-bool same_points(const Mesh& a, const Mesh& b) {
+template <class Mesh> bool same_points(const Mesh& a, const Mesh& b) {
   const auto pa = points_of(a), pb = points_of(b);
   if (pa.size() != pb.size()) return false;
   for (std::size_t i = 0; i < pa.size(); ++i)
@@ -21,8 +20,7 @@ bool same_points(const Mesh& a, const Mesh& b) {
 }
 
 // Runs `call` on a copy of `mesh`; it must throw ILSA_error and not touch the copy.
-template <class Mesh, class Call>
-void expect_error(const Mesh& mesh, Call call, const char* what) {
+template <class Mesh, class Call> void expect_error(const Mesh& mesh, Call call, const char* what) {
   Mesh m = mesh;
   bool thrown = false;
   try {
@@ -36,8 +34,7 @@ void expect_error(const Mesh& mesh, Call call, const char* what) {
 }
 
 // Smooths a copy; no exception, every coordinate finite, no face flipped.
-template <class Mesh>
-Mesh expect_processed(const Mesh& mesh, const char* what) {
+template <class Mesh> Mesh expect_processed(const Mesh& mesh, const char* what) {
   Mesh m = mesh;
   const auto s = PMP::smooth_surface_mesh_ilsa(m);
   for (const Point& p : points_of(m)) ILSA_CHECK(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()));
@@ -50,19 +47,20 @@ Mesh expect_processed(const Mesh& mesh, const char* what) {
   return m;
 }
 
-template <class Mesh>
-void test_non_triangle() {
+template <class Mesh> void test_non_triangle() {
   Mesh m;
   std::vector<Point> pts{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}};
   std::vector<std::vector<std::size_t>> polygons{{0, 1, 2, 3}, {1, 4, 5, 2}};
   PMP::polygon_soup_to_polygon_mesh(pts, polygons, m);
-  expect_error(m, [](Mesh& x) { PMP::smooth_surface_mesh_ilsa(x); }, "quad faces");
+  expect_error(
+      m, [](Mesh& x) { PMP::smooth_surface_mesh_ilsa(x); }, "quad faces");
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, PMP::ILSA_vertex_type> t;
-  expect_error(m, [&](Mesh& x) { PMP::classify_vertices_ilsa(x, boost::make_assoc_property_map(t)); }, "quad faces (classification)");
+  expect_error(
+      m, [&](Mesh& x) { PMP::classify_vertices_ilsa(x, boost::make_assoc_property_map(t)); },
+      "quad faces (classification)");
 }
 
-template <class Mesh>
-void test_empty_and_tiny() {
+template <class Mesh> void test_empty_and_tiny() {
   Mesh empty;
   const auto s = PMP::smooth_surface_mesh_ilsa(empty);
   ILSA_CHECK(s.number_of_iterations == 0 && is_empty(empty));
@@ -89,8 +87,7 @@ void test_isolated_vertices() {
   ILSA_CHECK(t[isolated] == PMP::ILSA_vertex_type::Corner);
 }
 
-template <class Mesh>
-void test_components_and_self_intersection() {
+template <class Mesh> void test_components_and_self_intersection() {
   // Two cubes, the second overlapping the first: two components that intersect.
   Soup a = cube(4), b = cube(4);
   for (Point& p : b.points) p = Point(p.x() + 1., p.y() + 0.5, p.z() + 0.25);
@@ -104,8 +101,7 @@ void test_components_and_self_intersection() {
   ILSA_CHECK(r.max_distance <= 1e-9 && r.fixed_moved == 0);
 }
 
-template <class Mesh>
-void test_degenerate_faces() {
+template <class Mesh> void test_degenerate_faces() {
   // A grid whose vertex (2,2) sits exactly on the segment of its neighbours
   // (1,1)-(3,3): two zero-area faces. And a needle: a vertex 1e-9 off a segment.
   const int n = 6;
@@ -159,23 +155,24 @@ void test_duplicated_and_non_manifold_vertices() {
   expect_processed(cracked, "duplicated vertices");
 }
 
-template <class Mesh>
-void test_non_finite() {
+template <class Mesh> void test_non_finite() {
   for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     Soup s = grid(4);
     s.points[7] = Point(bad, 0.5, 0);
     const Mesh m = to_mesh<Mesh>(s);
-    expect_error(m, [](Mesh& x) { PMP::smooth_surface_mesh_ilsa(x); }, std::isnan(bad) ? "NaN coordinate" : "infinite coordinate");
+    expect_error(
+        m, [](Mesh& x) { PMP::smooth_surface_mesh_ilsa(x); },
+        std::isnan(bad) ? "NaN coordinate" : "infinite coordinate");
   }
 }
 
-template <class Mesh>
-void test_constraints_and_ranges() {
+template <class Mesh> void test_constraints_and_ranges() {
   using vd = typename boost::graph_traits<Mesh>::vertex_descriptor;
   Mesh original = to_mesh<Mesh>(cube(4));
   perturb_on_surface(original, 0.3, 33);
   Mesh m = original;
-  PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::vertex_is_constrained_map(CGAL::Static_boolean_property_map<vd, true>()));
+  PMP::smooth_surface_mesh_ilsa(
+      m, CGAL::parameters::vertex_is_constrained_map(CGAL::Static_boolean_property_map<vd, true>()));
   ILSA_CHECK(same_points(m, original));
   std::cout << "every vertex constrained: unchanged\n";
 
@@ -188,7 +185,8 @@ void test_constraints_and_ranges() {
   Mesh other = to_mesh<Mesh>(cube(6));
   std::vector<vd> foreign;
   for (auto v : vertices(other)) foreign.push_back(v);
-  expect_error(original, [&](Mesh& x) { PMP::smooth_surface_mesh_ilsa(foreign, x); }, "vertices of another mesh");
+  expect_error(
+      original, [&](Mesh& x) { PMP::smooth_surface_mesh_ilsa(foreign, x); }, "vertices of another mesh");
 }
 
 // Translation by +1e7 and scaling by 1e-6: the same result up to that map.
@@ -202,13 +200,15 @@ void test_offsets_and_scales() {
     Surface_mesh m = base;
     for (auto v : vertices(m)) {
       const Point& p = m.point(v);
-      m.point(v) = Point(map.first * p.x() + map.second, map.first * p.y() + map.second, map.first * p.z() + map.second);
+      m.point(v) =
+          Point(map.first * p.x() + map.second, map.first * p.y() + map.second, map.first * p.z() + map.second);
     }
     PMP::smooth_surface_mesh_ilsa(m);
     double worst = 0;
     for (auto v : vertices(m)) {
       const Point& p = m.point(v);
-      const Point back((p.x() - map.second) / map.first, (p.y() - map.second) / map.first, (p.z() - map.second) / map.first);
+      const Point back((p.x() - map.second) / map.first, (p.y() - map.second) / map.first,
+                       (p.z() - map.second) / map.first);
       worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(back, reference.point(v))) / diagonal);
     }
     std::cout << "scale " << map.first << ", offset " << map.second << ": largest difference " << worst
@@ -218,11 +218,11 @@ void test_offsets_and_scales() {
   }
 }
 
-template <class Mesh>
-void test_invalid_parameters() {
+template <class Mesh> void test_invalid_parameters() {
   const Mesh m = to_mesh<Mesh>(cube(3));
   auto fails = [&](auto np, const char* what) {
-    expect_error(m, [&](Mesh& x) { PMP::smooth_surface_mesh_ilsa(x, np); }, what);
+    expect_error(
+        m, [&](Mesh& x) { PMP::smooth_surface_mesh_ilsa(x, np); }, what);
   };
   fails(CGAL::parameters::ilsa_penalty_mu(0.), "mu = 0");
   fails(CGAL::parameters::ilsa_penalty_mu(-1.), "mu < 0");

@@ -7,8 +7,7 @@
 using namespace ilsa_test;
 using Type = PMP::ILSA_vertex_type;
 
-template <class Mesh>
-void test_cube() {
+template <class Mesh> void test_cube() {
   const int n = 6;
   Soup soup = cube(n);
   perturb_cube(soup, n, 0.3, 1); // tangential noise must not change the answer
@@ -29,8 +28,7 @@ void test_cube() {
   assert(smooth == 6 * (n - 1) * (n - 1));
 }
 
-template <class Mesh>
-void test_grid() {
+template <class Mesh> void test_grid() {
   const int n = 8;
   Soup soup = grid(n);
   perturb_grid(soup, n, 0.3, 2);
@@ -45,8 +43,7 @@ void test_grid() {
 
 // Fandisk: counts of the spec §1.4 table (paper's 160° rule), and every ridge
 // vertex lies on exactly two edges that CGAL's own detect_sharp_edges finds.
-template <class Mesh>
-void test_fandisk() {
+template <class Mesh> void test_fandisk() {
   const Mesh m = read_mesh<Mesh>(data_file("fandisk.off"));
   std::map<std::string, std::size_t> counts;
   const auto types = types_of(m, &counts);
@@ -85,15 +82,14 @@ void test_horse_counts() {
   assert(s.number_of_corner_vertices == 2792);
   assert(s.number_of_smooth_vertices == 48485 - 1698 - 2792);
   // A smaller feature angle finds fewer features.
-  const auto s120 = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types),
-                                                CGAL::parameters::ilsa_feature_angle(120.));
+  const auto s120 =
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), CGAL::parameters::ilsa_feature_angle(120.));
   assert(s120.number_of_ridge_vertices + s120.number_of_corner_vertices <
          s.number_of_ridge_vertices + s.number_of_corner_vertices);
 }
 
 // User constraints override the detection (spec §1.5).
-template <class Mesh>
-void test_user_constraints() {
+template <class Mesh> void test_user_constraints() {
   using vd = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using ed = typename boost::graph_traits<Mesh>::edge_descriptor;
   const int n = 4;

@@ -39,16 +39,16 @@ int main() {
 
     Surface_mesh m = original;
     PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::number_of_iterations(iterations)
-                                          .number_of_relaxation_steps(steps)
-                                          .ilsa_relaxation(relax1)
-                                          .ilsa_penalty_relaxation(relax2)
-                                          .ilsa_penalty_mu(mu)
-                                          .ilsa_length_weight(wl)
-                                          .ilsa_area_weight(wa)
-                                          .ilsa_feature_angle(angle)
-                                          .ilsa_fix_unattached_candidates(fix)
-                                          .ilsa_quality_floor(floor)
-                                          .ilsa_quality_monotone(monotone));
+                                         .number_of_relaxation_steps(steps)
+                                         .ilsa_relaxation(relax1)
+                                         .ilsa_penalty_relaxation(relax2)
+                                         .ilsa_penalty_mu(mu)
+                                         .ilsa_length_weight(wl)
+                                         .ilsa_area_weight(wa)
+                                         .ilsa_feature_angle(angle)
+                                         .ilsa_fix_unattached_candidates(fix)
+                                         .ilsa_quality_floor(floor)
+                                         .ilsa_quality_monotone(monotone));
     // Ridge vertices are checked by the smoothing test; here: surface, flips, fixed vertices, NaN.
     std::map<Surface_mesh::Vertex_index, PMP::ILSA_vertex_type> types;
     PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
@@ -71,8 +71,8 @@ int main() {
                 << ", relax1 " << relax1 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa
                 << ", angle " << angle << ", fix " << fix << ", floor " << floor << ", monotone " << monotone
                 << "): flipped " << f.number_of_flipped_faces << ", distance " << f.max_vertex_distance
-                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate "
-                << collapsed << std::endl;
+                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
+                << std::endl;
       const auto n0 = face_normals_of(original), n1 = face_normals_of(m);
       for (auto fd : faces(m))
         if (n0[std::size_t(fd)] * n1[std::size_t(fd)] < 0) {

@@ -50,14 +50,7 @@ double max_difference(const std::vector<Point>& a, const std::vector<Point>& b) 
 int main() {
   Surface_mesh sm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
   perturb_on_surface(sm, 0.3, 21);
-  Soup soup;
-  soup.points = points_of(sm);
-  for (auto f : faces(sm)) {
-    std::array<std::size_t, 3> t{};
-    std::size_t k = 0;
-    for (auto v : vertices_around_face(halfedge(f, sm), sm)) t[k++] = std::size_t(v);
-    soup.triangles.push_back(t);
-  }
+  Soup soup = soup_of(sm);
   Open_mesh om = build(soup);
   assert(num_vertices(om) == num_vertices(sm) && num_faces(om) == num_faces(sm));
   const Open_mesh original = om;
@@ -74,8 +67,8 @@ int main() {
   const double diagonal = bbox_diagonal(sm);
   const double difference = max_difference(points_of(om), points_of(sm));
   const double float_difference = max_difference(points_of(om_default_map), points_of(sm));
-  std::cout << "OpenMesh vs Surface_mesh: max difference " << difference << " (default point map, through float: "
-            << float_difference << ")" << std::endl;
+  std::cout << "OpenMesh vs Surface_mesh: max difference " << difference
+            << " (default point map, through float: " << float_difference << ")" << std::endl;
   assert(difference <= 1e-12 * diagonal);
   assert(float_difference <= 1e-6 * diagonal);
 

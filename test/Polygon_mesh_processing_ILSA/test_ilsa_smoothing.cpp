@@ -24,8 +24,7 @@ void require(const Invariant_report& r, const char* what) {
   assert(r.mean_q_after > r.mean_q_before);
 }
 
-template <class Mesh>
-void test_perturbed_cube() {
+template <class Mesh> void test_perturbed_cube() {
   const int n = 8;
   Soup soup = cube(n);
   perturb_cube(soup, n, 0.3, 3);
@@ -38,12 +37,12 @@ void test_perturbed_cube() {
   assert(s.number_of_ridge_vertices == std::size_t(12 * (n - 1)));
   assert(s.number_of_moves > 0);
   // A ridge vertex of the cube stays on a cube edge: two coordinates at +-1.
-  require(check_invariants(original, m, [](std::size_t, const Point& p) { return cube_extremal_coordinates(p, 1e-12) == 2; }),
+  require(check_invariants(original, m,
+                           [](std::size_t, const Point& p) { return cube_extremal_coordinates(p, 1e-12) == 2; }),
           "cube");
 }
 
-template <class Mesh>
-void test_planar_grid() {
+template <class Mesh> void test_planar_grid() {
   const int n = 12;
   Mesh original = to_mesh<Mesh>(grid(n));
   perturb_on_surface(original, 0.9, 4);
@@ -56,8 +55,7 @@ void test_planar_grid() {
 
 // Fandisk, perturbed along its surface: ridge vertices must stay on the sharp
 // edges that CGAL's detect_sharp_edges finds on the input.
-template <class Mesh>
-void test_fandisk() {
+template <class Mesh> void test_fandisk() {
   Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
   perturb_on_surface(original, 0.3, 5);
   Mesh m = original;
@@ -71,16 +69,17 @@ void test_fandisk() {
     if (e.second)
       segments.emplace_back(get(CGAL::vertex_point, original, source(e.first, original)),
                             get(CGAL::vertex_point, original, target(e.first, original)));
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, std::vector<K::Segment_3>::iterator>>>;
+  using Tree =
+      CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, std::vector<K::Segment_3>::iterator>>>;
   Tree tree(segments.begin(), segments.end());
   const double tolerance = on_surface * bbox_diagonal(original);
-  require(check_invariants(original, m,
-                           [&](std::size_t, const Point& p) { return tree.squared_distance(p) <= tolerance * tolerance; }),
-          "fandisk");
+  require(
+      check_invariants(original, m,
+                       [&](std::size_t, const Point& p) { return tree.squared_distance(p) <= tolerance * tolerance; }),
+      "fandisk");
 }
 
-template <class Mesh>
-void test_sphere() {
+template <class Mesh> void test_sphere() {
   Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
   perturb_on_surface(original, 0.3, 6);
   Mesh m = original;
@@ -99,14 +98,7 @@ double max_difference(const std::vector<Point>& a, const std::vector<Point>& b) 
 void test_mesh_types_agree() {
   Surface_mesh sm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
   perturb_on_surface(sm, 0.3, 7);
-  Soup soup;
-  soup.points = points_of(sm);
-  for (auto f : faces(sm)) {
-    std::array<std::size_t, 3> t{};
-    std::size_t k = 0;
-    for (auto v : vertices_around_face(halfedge(f, sm), sm)) t[k++] = std::size_t(v);
-    soup.triangles.push_back(t);
-  }
+  Soup soup = soup_of(sm);
   Polyhedron poly = to_mesh<Polyhedron>(soup);
   PMP::smooth_surface_mesh_ilsa(sm);
   PMP::smooth_surface_mesh_ilsa(poly);
@@ -119,14 +111,7 @@ void test_mesh_types_agree() {
 void test_vertex_order() {
   Surface_mesh sm = read_mesh<Surface_mesh>(data_file("sphere_low.off"));
   perturb_on_surface(sm, 0.3, 8);
-  Soup soup, shuffled;
-  soup.points = points_of(sm);
-  for (auto f : faces(sm)) {
-    std::array<std::size_t, 3> t{};
-    std::size_t k = 0;
-    for (auto v : vertices_around_face(halfedge(f, sm), sm)) t[k++] = std::size_t(v);
-    soup.triangles.push_back(t);
-  }
+  Soup soup = soup_of(sm), shuffled;
   std::vector<std::size_t> permutation(soup.points.size());
   std::iota(permutation.begin(), permutation.end(), std::size_t(0));
   std::shuffle(permutation.begin(), permutation.end(), std::mt19937(9)); // old index -> new index
@@ -149,8 +134,7 @@ void test_vertex_order() {
 }
 
 // Named parameters chain in both orders with CGAL's own, and take effect.
-template <class Mesh>
-void test_named_parameter_chaining() {
+template <class Mesh> void test_named_parameter_chaining() {
   Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
   perturb_on_surface(original, 0.3, 10);
   auto run = [&](const auto& np) {
@@ -167,14 +151,18 @@ void test_named_parameter_chaining() {
   assert(max_difference(a.first, default_mu.first) > 1e-6);
   assert(max_difference(a.first, default_relax.first) > 1e-6);
   // Every ILSA tag changes the result.
-  const auto c = run(CGAL::parameters::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_relaxation(0.3)
-                         .ilsa_penalty_relaxation(0.9).ilsa_length_weight(2.).ilsa_area_weight(0.).verbose(false));
+  const auto c = run(CGAL::parameters::number_of_iterations(4)
+                         .ilsa_penalty_mu(5.)
+                         .ilsa_relaxation(0.3)
+                         .ilsa_penalty_relaxation(0.9)
+                         .ilsa_length_weight(2.)
+                         .ilsa_area_weight(0.)
+                         .verbose(false));
   assert(max_difference(a.first, c.first) > 1e-6);
 }
 
 // Only the vertices of the range move.
-template <class Mesh>
-void test_vertex_range() {
+template <class Mesh> void test_vertex_range() {
   Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
   perturb_on_surface(original, 0.3, 11);
   Mesh m = original;
@@ -193,8 +181,7 @@ void test_vertex_range() {
 }
 
 // Constrained vertices do not move.
-template <class Mesh>
-void test_constrained_vertices() {
+template <class Mesh> void test_constrained_vertices() {
   using vd = typename boost::graph_traits<Mesh>::vertex_descriptor;
   Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
   perturb_on_surface(original, 0.3, 12);
@@ -210,17 +197,9 @@ void test_constrained_vertices() {
 // Projection cannot jump between sheets: a thin shell made of two concentric
 // copies of a sphere, 0.2 % of the radius apart, far less than the inward
 // pull of a Laplacian step on it. Every vertex must stay on its own sheet.
-template <class Mesh>
-void test_thin_shell() {
+template <class Mesh> void test_thin_shell() {
   const Surface_mesh sphere = read_mesh<Surface_mesh>(data_file("sphere_low.off"));
-  Soup soup;
-  soup.points = points_of(sphere);
-  for (auto f : faces(sphere)) {
-    std::array<std::size_t, 3> t{};
-    std::size_t k = 0;
-    for (auto v : vertices_around_face(halfedge(f, sphere), sphere)) t[k++] = std::size_t(v);
-    soup.triangles.push_back(t);
-  }
+  Soup soup = soup_of(sphere);
   const std::size_t n = soup.points.size(), nf = soup.triangles.size();
   const auto box = CGAL::bounding_box(soup.points.begin(), soup.points.end());
   const Point center = CGAL::midpoint(box.min(), box.max());
@@ -235,7 +214,8 @@ void test_thin_shell() {
   const auto stats = PMP::smooth_surface_mesh_ilsa(m);
 
   // Distance of each vertex to its own sheet of the input.
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::iterator>>>;
+  using Tree =
+      CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::iterator>>>;
   std::vector<K::Triangle_3> outer, inner;
   const auto p0 = points_of(original);
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t> index;

@@ -6,7 +6,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 #ifndef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE
-#error "CGAL's named-parameter list was included without the ILSA tags: put the package's include/ directory before CGAL's in the include path."
+#error                                                                                                                 \
+    "CGAL's named-parameter list was included without the ILSA tags: put the package's include/ directory before CGAL's in the include path."
 #endif
 
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
@@ -48,10 +49,11 @@ Classification_options read_classification_parameters(
   Classification_options options;
   options.feature_angle_degrees =
       choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), default_feature_angle);
-  options.fix_unattached_candidates =
-      choose_parameter(get_parameter(np, internal_np::ilsa_fix_unattached_candidates), default_fix_unattached_candidates);
+  options.fix_unattached_candidates = choose_parameter(get_parameter(np, internal_np::ilsa_fix_unattached_candidates),
+                                                       default_fix_unattached_candidates);
   if (!(options.feature_angle_degrees > 0 && options.feature_angle_degrees <= 180))
-    throw ILSA_error("ilsa_feature_angle must be in (0, 180] degrees, got " + std::to_string(options.feature_angle_degrees));
+    throw ILSA_error("ilsa_feature_angle must be in (0, 180] degrees, got " +
+                     std::to_string(options.feature_angle_degrees));
 
   const auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                     Static_boolean_property_map<vertex_descriptor, false>());
@@ -72,10 +74,18 @@ Classification_options read_classification_parameters(
 inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
   for (ILSA_vertex_type t : c.type) {
     switch (t) {
-      case ILSA_vertex_type::Smooth: ++s.number_of_smooth_vertices; break;
-      case ILSA_vertex_type::Ridge: ++s.number_of_ridge_vertices; break;
-      case ILSA_vertex_type::Corner: ++s.number_of_corner_vertices; break;
-      case ILSA_vertex_type::Boundary: ++s.number_of_boundary_vertices; break;
+    case ILSA_vertex_type::Smooth:
+      ++s.number_of_smooth_vertices;
+      break;
+    case ILSA_vertex_type::Ridge:
+      ++s.number_of_ridge_vertices;
+      break;
+    case ILSA_vertex_type::Corner:
+      ++s.number_of_corner_vertices;
+      break;
+    case ILSA_vertex_type::Boundary:
+      ++s.number_of_boundary_vertices;
+      break;
     }
   }
 }
@@ -115,26 +125,18 @@ inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_feature_angle}
- *     \cgalParamDescription{the feature (dihedral) angle θ_f in degrees; an edge whose faces meet at a smaller dihedral angle is sharp}
- *     \cgalParamType{`double`, in (0, 180]}
- *     \cgalParamDefault{160 (the paper's 8π/9)}
- *   \cgalParamNEnd
+ *     \cgalParamDescription{the feature (dihedral) angle θ_f in degrees; an edge whose faces meet at a smaller dihedral
+ * angle is sharp} \cgalParamType{`double`, in (0, 180]} \cgalParamDefault{160 (the paper's 8π/9)} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
- *     \cgalParamDescription{whether a ridge candidate with no sharp edge is a corner (the paper's rule) or a smooth vertex}
- *     \cgalParamType{`bool`}
- *     \cgalParamDefault{`true`}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{vertex_is_constrained_map}
- *     \cgalParamDescription{a property map telling which vertices are fixed; they are reported as corners (boundary vertices stay boundary)}
- *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool` as value}
- *     \cgalParamDefault{no vertex is constrained}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{edge_is_constrained_map}
- *     \cgalParamDescription{when given, these edges are the sharp edges, replacing the detection: a vertex with two constrained edges is a ridge vertex, with one or more than two a corner, with none a smooth vertex}
- *     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
- *     \cgalParamDefault{sharp edges are detected}
- *   \cgalParamNEnd
- * \cgalNamedParamsEnd
+ *     \cgalParamDescription{whether a ridge candidate with no sharp edge is a corner (the paper's rule) or a smooth
+ * vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd \cgalParamNBegin{vertex_is_constrained_map}
+ *     \cgalParamDescription{a property map telling which vertices are fixed; they are reported as corners (boundary
+ * vertices stay boundary)} \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool`
+ * as value} \cgalParamDefault{no vertex is constrained} \cgalParamNEnd \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{when given, these edges are the sharp edges, replacing the detection: a vertex with two
+ * constrained edges is a ridge vertex, with one or more than two a corner, with none a smooth vertex} \cgalParamType{a
+ * model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value} \cgalParamDefault{sharp edges are
+ * detected} \cgalParamNEnd \cgalNamedParamsEnd
  *
  * @return the number of vertices of each type (the other counters are zero)
  * @throws ILSA_error for a non-triangle face, a non-finite coordinate or an out-of-range parameter
@@ -146,7 +148,8 @@ ILSA_statistics classify_vertices_ilsa(const TriangleMesh& tm, VertexTypeMap ver
   using parameters::get_parameter;
   using GT = boost::graph_traits<TriangleMesh>;
 
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm =
+      choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   std::vector<typename GT::vertex_descriptor> vertex_list;
   internal::ILSA::Vertex_index_map<TriangleMesh> vertex_index;
   std::vector<typename GT::edge_descriptor> edge_list;

@@ -42,11 +42,11 @@ struct Triangle_shape {
   double smallest_angle_degrees;
 };
 
-template <class P>
-Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2) {
-  const std::array<std::array<double, 3>, 3> v{{{CGAL::to_double(p0.x()), CGAL::to_double(p0.y()), CGAL::to_double(p0.z())},
-                                                {CGAL::to_double(p1.x()), CGAL::to_double(p1.y()), CGAL::to_double(p1.z())},
-                                                {CGAL::to_double(p2.x()), CGAL::to_double(p2.y()), CGAL::to_double(p2.z())}}};
+template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2) {
+  const std::array<std::array<double, 3>, 3> v{
+      {{CGAL::to_double(p0.x()), CGAL::to_double(p0.y()), CGAL::to_double(p0.z())},
+       {CGAL::to_double(p1.x()), CGAL::to_double(p1.y()), CGAL::to_double(p1.z())},
+       {CGAL::to_double(p2.x()), CGAL::to_double(p2.y()), CGAL::to_double(p2.z())}}};
   auto sub = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
     return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
   };
@@ -79,8 +79,7 @@ Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2) {
 /// edge): 1 for an equilateral triangle, 0 for a degenerate one. This is the
 /// paper's quality measure and the package's primary one.
 /// `P` is any point type with `x()`, `y()`, `z()`.
-template <class P>
-double triangle_aspect_ratio(const P& p0, const P& p1, const P& p2) {
+template <class P> double triangle_aspect_ratio(const P& p0, const P& p1, const P& p2) {
   const auto s = internal::ILSA::triangle_shape(p0, p1, p2);
   const double perimeter = s.length[0] + s.length[1] + s.length[2];
   const double longest = (std::max)({s.length[0], s.length[1], s.length[2]});
@@ -90,8 +89,7 @@ double triangle_aspect_ratio(const P& p0, const P& p1, const P& p2) {
 
 /// \ingroup PkgPMPILSARef
 /// Radius ratio `2·r_in / r_circ` of a triangle: 1 equilateral, 0 degenerate.
-template <class P>
-double triangle_radius_ratio(const P& p0, const P& p1, const P& p2) {
+template <class P> double triangle_radius_ratio(const P& p0, const P& p1, const P& p2) {
   const auto s = internal::ILSA::triangle_shape(p0, p1, p2);
   const double perimeter = s.length[0] + s.length[1] + s.length[2];
   const double product = s.length[0] * s.length[1] * s.length[2];
@@ -101,8 +99,7 @@ double triangle_radius_ratio(const P& p0, const P& p1, const P& p2) {
 
 /// \ingroup PkgPMPILSARef
 /// Mean ratio `4√3·A / Σ l²` of a triangle: 1 equilateral, 0 degenerate.
-template <class P>
-double triangle_mean_ratio(const P& p0, const P& p1, const P& p2) {
+template <class P> double triangle_mean_ratio(const P& p0, const P& p1, const P& p2) {
   const auto s = internal::ILSA::triangle_shape(p0, p1, p2);
   const double sum = s.length[0] * s.length[0] + s.length[1] * s.length[1] + s.length[2] * s.length[2];
   return sum > 0 ? 2. * std::sqrt(3.) * s.double_area / sum : 0.;
@@ -110,8 +107,7 @@ double triangle_mean_ratio(const P& p0, const P& p1, const P& p2) {
 
 /// \ingroup PkgPMPILSARef
 /// Smallest angle of a triangle, in degrees (0 for a degenerate one).
-template <class P>
-double triangle_minimum_angle(const P& p0, const P& p1, const P& p2) {
+template <class P> double triangle_minimum_angle(const P& p0, const P& p1, const P& p2) {
   const auto s = internal::ILSA::triangle_shape(p0, p1, p2);
   return s.double_area > 0 ? s.smallest_angle_degrees : 0.;
 }
@@ -124,9 +120,9 @@ struct ILSA_quality_summary {
   double min_aspect_ratio = 0, mean_aspect_ratio = 0;
   double min_radius_ratio = 0, mean_radius_ratio = 0;
   double min_mean_ratio = 0, mean_mean_ratio = 0;
-  double min_angle = 0; ///< degrees
-  double threshold = 0.3;             ///< the threshold `share_below_threshold` refers to
-  double share_below_threshold = 0;   ///< share of faces with aspect ratio below `threshold`
+  double min_angle = 0;                    ///< degrees
+  double threshold = 0.3;                  ///< the threshold `share_below_threshold` refers to
+  double share_below_threshold = 0;        ///< share of faces with aspect ratio below `threshold`
   std::array<std::size_t, 10> histogram{}; ///< aspect ratio counts in [0,0.1), [0.1,0.2), ..., [0.9,1]
 };
 
@@ -139,7 +135,8 @@ ILSA_quality_summary mesh_quality_ilsa(const FaceRange& face_range, const Triang
                                        const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm =
+      choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
 
   ILSA_quality_summary s;
   s.threshold = threshold;
@@ -191,15 +188,17 @@ ILSA_quality_summary mesh_quality_ilsa(const TriangleMesh& tm, double threshold 
 /// Distances are relative to the bounding-box diagonal of the original.
 struct ILSA_fidelity_summary {
   std::size_t number_of_faces = 0;
-  std::size_t number_of_flipped_faces = 0;  ///< faces whose normal turned by more than 90 degrees
-  double max_vertex_distance = 0;           ///< largest distance of a smoothed vertex to the original surface
+  std::size_t number_of_flipped_faces = 0; ///< faces whose normal turned by more than 90 degrees
+  double max_vertex_distance = 0;          ///< largest distance of a smoothed vertex to the original surface
   double mean_vertex_distance = 0;
-  double hausdorff_distance = 0;            ///< approximate symmetric Hausdorff distance (CGAL's, fixed seed)
+  double hausdorff_distance = 0; ///< approximate symmetric Hausdorff distance (CGAL's, fixed seed)
   bool closed = false;
-  double volume_change = 0;                 ///< (V_smoothed - V_original) / V_original, closed meshes only
-  std::size_t number_of_sharp_edges = 0;    ///< sharp edges of the original (dihedral angle below the feature angle)
-  double max_feature_vertex_deviation = 0;  ///< largest distance of an endpoint of a smoothed sharp edge to the original sharp edges
-  double max_feature_deviation = 0;         ///< largest distance of any point of a smoothed sharp edge (ends and 3 inner points) to the original sharp edges
+  double volume_change = 0;              ///< (V_smoothed - V_original) / V_original, closed meshes only
+  std::size_t number_of_sharp_edges = 0; ///< sharp edges of the original (dihedral angle below the feature angle)
+  double max_feature_vertex_deviation =
+      0; ///< largest distance of an endpoint of a smoothed sharp edge to the original sharp edges
+  double max_feature_deviation = 0; ///< largest distance of any point of a smoothed sharp edge (ends and 3 inner
+                                    ///< points) to the original sharp edges
 };
 
 /// \ingroup PkgPMPILSARef
@@ -258,7 +257,8 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   const CGAL::Random saved = CGAL::get_default_random();
   CGAL::get_default_random() = CGAL::Random(seed);
   const auto sampling = parameters::random_seed(seed).number_of_points_on_faces(2 * num_faces(a));
-  r.hausdorff_distance = approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, sampling, sampling) * scale;
+  r.hausdorff_distance =
+      approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, sampling, sampling) * scale;
   CGAL::get_default_random() = saved;
 
   r.closed = CGAL::is_closed(a);
@@ -284,7 +284,8 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   }
   r.number_of_sharp_edges = sharp.size();
   if (!sharp.empty()) {
-    using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, typename std::vector<K::Segment_3>::const_iterator>>>;
+    using Segment_tree = CGAL::AABB_tree<
+        CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, typename std::vector<K::Segment_3>::const_iterator>>>;
     Segment_tree lines(sharp.cbegin(), sharp.cend());
     for (const auto& s : smoothed_sharp)
       for (int k = 0; k <= 4; ++k) {

@@ -24,10 +24,14 @@ enum class ILSA_vertex_type : unsigned char {
 /// Name of a vertex type ("smooth", "ridge", "corner", "boundary").
 inline const char* to_string(ILSA_vertex_type t) {
   switch (t) {
-    case ILSA_vertex_type::Smooth: return "smooth";
-    case ILSA_vertex_type::Ridge: return "ridge";
-    case ILSA_vertex_type::Corner: return "corner";
-    case ILSA_vertex_type::Boundary: return "boundary";
+  case ILSA_vertex_type::Smooth:
+    return "smooth";
+  case ILSA_vertex_type::Ridge:
+    return "ridge";
+  case ILSA_vertex_type::Corner:
+    return "corner";
+  case ILSA_vertex_type::Boundary:
+    return "boundary";
   }
   return "unknown";
 }
@@ -49,10 +53,10 @@ struct ILSA_statistics {
   std::size_t number_of_ridge_vertices = 0;
   std::size_t number_of_corner_vertices = 0;
   std::size_t number_of_boundary_vertices = 0;
-  std::size_t number_of_iterations = 0;   ///< global iterations run
-  std::size_t number_of_moves = 0;        ///< accepted vertex moves, summed over the iterations
-  std::size_t number_of_shortened_moves = 0; ///< moves accepted only after being shortened by the safety check
-  std::size_t number_of_rejected_moves = 0;  ///< moves dropped by the safety check
+  std::size_t number_of_iterations = 0;          ///< global iterations run
+  std::size_t number_of_moves = 0;               ///< accepted vertex moves, summed over the iterations
+  std::size_t number_of_shortened_moves = 0;     ///< moves accepted only after being shortened by the safety check
+  std::size_t number_of_rejected_moves = 0;      ///< moves dropped by the safety check
   std::size_t number_of_guarded_projections = 0; ///< projections the sheet guard kept local
 };
 

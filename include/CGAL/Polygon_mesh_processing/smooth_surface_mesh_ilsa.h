@@ -11,7 +11,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 #ifndef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE
-#error "CGAL's named-parameter list was included without the ILSA tags: put the package's include/ directory before CGAL's in the include path."
+#error                                                                                                                 \
+    "CGAL's named-parameter list was included without the ILSA tags: put the package's include/ directory before CGAL's in the include path."
 #endif
 
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
@@ -36,8 +37,7 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 // Keeps `smooth_surface_mesh_ilsa(tm, np)` unambiguous when `np` is a non-const lvalue.
-template <class T>
-struct is_named_parameters : std::false_type {};
+template <class T> struct is_named_parameters : std::false_type {};
 template <class T, class Tag, class Base>
 struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std::true_type {};
 } // namespace ILSA
@@ -76,33 +76,30 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamDescription{an instance of a geometric traits class}
  *     \cgalParamType{a model of `Kernel`}
  *     \cgalParamDefault{a kernel deduced from the point type, using `CGAL::Kernel_traits`}
- *     \cgalParamExtra{The computation runs in `double` on coordinates relative to the bounding box; points are read with `CGAL::to_double()` and written with the point type's `(x, y, z)` constructor.}
- *   \cgalParamNEnd
+ *     \cgalParamExtra{The computation runs in `double` on coordinates relative to the bounding box; points are read
+ * with `CGAL::to_double()` and written with the point type's `(x, y, z)` constructor.} \cgalParamNEnd
  *   \cgalParamNBegin{number_of_iterations}
  *     \cgalParamDescription{the number of global iterations (the paper's max_global_iter_num)}
  *     \cgalParamType{unsigned int, at most 100000}
  *     \cgalParamDefault{`20`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_relaxation_steps}
- *     \cgalParamDescription{the number of sweeps of the ILSA and of the penalty step in each iteration (max_smooth_iter_num); the sweeps stop early once no displacement changes by more than 1e-4 of the mean edge length}
+ *     \cgalParamDescription{the number of sweeps of the ILSA and of the penalty step in each iteration
+ * (max_smooth_iter_num); the sweeps stop early once no displacement changes by more than 1e-4 of the mean edge length}
  *     \cgalParamType{unsigned int, 1 to 10000}
  *     \cgalParamDefault{`3`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_relaxation}
- *     \cgalParamDescription{the ILSA relaxation factor relax1 (share of the neighbours' weighted mean displacement taken in each sweep)}
- *     \cgalParamType{`double`, in (0, 1]}
- *     \cgalParamDefault{`0.5`}
- *   \cgalParamNEnd
+ *     \cgalParamDescription{the ILSA relaxation factor relax1 (share of the neighbours' weighted mean displacement
+ * taken in each sweep)} \cgalParamType{`double`, in (0, 1]} \cgalParamDefault{`0.5`} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_penalty_relaxation}
  *     \cgalParamDescription{the relaxation factor relax2 of the penalty step}
  *     \cgalParamType{`double`, in (0, 1]}
  *     \cgalParamDefault{`0.5`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_penalty_mu}
- *     \cgalParamDescription{the penalty parameter μ: the smaller, the more the penalty step keeps a vertex on the plane of its ILSA displacement}
- *     \cgalParamType{`double`, positive}
- *     \cgalParamDefault{`1`}
- *   \cgalParamNEnd
+ *     \cgalParamDescription{the penalty parameter μ: the smaller, the more the penalty step keeps a vertex on the plane
+ * of its ILSA displacement} \cgalParamType{`double`, positive} \cgalParamDefault{`1`} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_length_weight}
  *     \cgalParamDescription{the weight wl of the edge-length term of the penalty step}
  *     \cgalParamType{`double`, non-negative}
@@ -119,39 +116,35 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamDefault{`160` (the paper's 8π/9)}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
- *     \cgalParamDescription{whether a ridge candidate with no sharp edge is fixed as a corner (the paper's rule) or smoothed as a smooth vertex}
- *     \cgalParamType{`bool`}
- *     \cgalParamDefault{`true`}
- *   \cgalParamNEnd
+ *     \cgalParamDescription{whether a ridge candidate with no sharp edge is fixed as a corner (the paper's rule) or
+ * smoothed as a smooth vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
  *   \cgalParamNBegin{vertex_is_constrained_map}
  *     \cgalParamDescription{a property map telling which vertices are fixed}
  *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool` as value}
  *     \cgalParamDefault{no vertex is constrained}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{edge_is_constrained_map}
- *     \cgalParamDescription{when given, these edges are the sharp edges instead of the detected ones: a vertex with two constrained edges slides along them, one with one or more than two is fixed}
- *     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
- *     \cgalParamDefault{sharp edges are detected with `ilsa_feature_angle`}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{do_project}
- *     \cgalParamDescription{whether moved vertices are projected back onto the input surface (ridge vertices onto their crease); without projection they stay where the displacement puts them, off the surface}
- *     \cgalParamType{`bool`}
- *     \cgalParamDefault{`true`}
- *   \cgalParamNEnd
+ *     \cgalParamDescription{when given, these edges are the sharp edges instead of the detected ones: a vertex with two
+ * constrained edges slides along them, one with one or more than two is fixed} \cgalParamType{a model of
+ * `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value} \cgalParamDefault{sharp edges are detected
+ * with `ilsa_feature_angle`} \cgalParamNEnd \cgalParamNBegin{do_project} \cgalParamDescription{whether moved vertices
+ * are projected back onto the input surface (ridge vertices onto their crease); without projection they stay where the
+ * displacement puts them, off the surface} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
  *   \cgalParamNBegin{use_safety_constraints}
- *     \cgalParamDescription{whether every move is checked after projection: a move that would reverse a triangle (with respect to the input surface) or collapse it is halved up to three times, then dropped for the iteration. With `false`, the penalty step is the only protection against inverted triangles, as in the paper}
- *     \cgalParamType{`bool`}
+ *     \cgalParamDescription{whether every move is checked after projection: a move that would reverse a triangle (with
+ * respect to the input surface) or collapse it is halved up to three times, then dropped for the iteration. With
+ * `false`, the penalty step is the only protection against inverted triangles, as in the paper} \cgalParamType{`bool`}
  *     \cgalParamDefault{`true`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_quality_floor}
- *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it lowers the minimum aspect ratio of the vertex's star to a value below this floor. 0 disables this part of the check}
+ *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it lowers the minimum
+ * aspect ratio of the vertex's star to a value below this floor. 0 disables this part of the check}
  *     \cgalParamType{`double`, in [0, 1)}
  *     \cgalParamDefault{`0.5`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_quality_monotone}
- *     \cgalParamDescription{with the safety check on, shorten or drop every move that lowers the minimum aspect ratio of the vertex's star (the same as a quality floor of 1)}
- *     \cgalParamType{`bool`}
- *     \cgalParamDefault{`false`}
+ *     \cgalParamDescription{with the safety check on, shorten or drop every move that lowers the minimum aspect ratio
+ * of the vertex's star (the same as a quality floor of 1)} \cgalParamType{`bool`} \cgalParamDefault{`false`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
  *     \cgalParamDescription{whether to print the vertex types and what each iteration did to `std::cerr`}
@@ -210,8 +203,10 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   require(relax1 > 0 && relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
   require(penalty.relax2 > 0 && penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]");
   require(penalty.mu > 0 && std::isfinite(penalty.mu), "ilsa_penalty_mu must be positive and finite");
-  require(penalty.length_weight >= 0 && std::isfinite(penalty.length_weight), "ilsa_length_weight must be non-negative and finite");
-  require(penalty.area_weight >= 0 && std::isfinite(penalty.area_weight), "ilsa_area_weight must be non-negative and finite");
+  require(penalty.length_weight >= 0 && std::isfinite(penalty.length_weight),
+          "ilsa_length_weight must be non-negative and finite");
+  require(penalty.area_weight >= 0 && std::isfinite(penalty.area_weight),
+          "ilsa_area_weight must be non-negative and finite");
   penalty.sweeps = std::size_t(sweeps);
 
   // Frozen flat copy of the input (T_ori), user constraints, vertex range.
@@ -220,8 +215,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   std::vector<typename GT::edge_descriptor> edge_list;
   const ilsa::Flat_mesh original = ilsa::build_flat_mesh(tm, vpm, vertex_list, vertex_index, edge_list);
   std::vector<unsigned char> constrained_vertices, constrained_edges;
-  const auto options = ilsa::read_classification_parameters(tm, np, vertex_list, edge_list, constrained_vertices,
-                                                            constrained_edges);
+  const auto options =
+      ilsa::read_classification_parameters(tm, np, vertex_list, edge_list, constrained_vertices, constrained_edges);
   std::vector<unsigned char> movable(original.number_of_vertices(), 0);
   for (auto v : vertices) {
     const auto found = vertex_index.find(v);

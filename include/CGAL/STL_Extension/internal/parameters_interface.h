@@ -14,6 +14,7 @@
 #include_next <CGAL/STL_Extension/internal/parameters_interface.h>
 
 // ILSA parameters (see smooth_surface_mesh_ilsa.h for their meaning)
+// clang-format off
 CGAL_add_named_parameter(ilsa_relaxation_t, ilsa_relaxation, ilsa_relaxation)
 CGAL_add_named_parameter(ilsa_penalty_relaxation_t, ilsa_penalty_relaxation, ilsa_penalty_relaxation)
 CGAL_add_named_parameter(ilsa_penalty_mu_t, ilsa_penalty_mu, ilsa_penalty_mu)
@@ -23,6 +24,7 @@ CGAL_add_named_parameter(ilsa_feature_angle_t, ilsa_feature_angle, ilsa_feature_
 CGAL_add_named_parameter(ilsa_fix_unattached_candidates_t, ilsa_fix_unattached_candidates, ilsa_fix_unattached_candidates)
 CGAL_add_named_parameter(ilsa_quality_floor_t, ilsa_quality_floor, ilsa_quality_floor)
 CGAL_add_named_parameter(ilsa_quality_monotone_t, ilsa_quality_monotone, ilsa_quality_monotone)
+// clang-format on
 
 // Checked by the package's public headers: if CGAL's own list was picked up
 // instead of this one, compilation stops with a clear message.

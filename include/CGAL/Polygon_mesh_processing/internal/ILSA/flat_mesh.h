@@ -87,18 +87,18 @@ inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<std::size
 }
 
 template <class TriangleMesh>
-using Vertex_index_map = boost::unordered_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, std::size_t>;
+using Vertex_index_map =
+    boost::unordered_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, std::size_t>;
 
 /// Builds the flat copy of `tm`. `vertex_list` receives the vertex descriptors in
 /// index order, `vertex_index` the inverse map, `edge_list` the edge descriptors.
 /// Throws `ILSA_error` for a non-triangle face or a non-finite coordinate; `tm`
 /// is only read.
 template <class TriangleMesh, class VertexPointMap>
-Flat_mesh build_flat_mesh(
-    const TriangleMesh& tm, const VertexPointMap& vpm,
-    std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
-    Vertex_index_map<TriangleMesh>& vertex_index,
-    std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list) {
+Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
+                          std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
+                          Vertex_index_map<TriangleMesh>& vertex_index,
+                          std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list) {
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using face_descriptor = typename GT::face_descriptor;
@@ -166,8 +166,9 @@ Flat_mesh build_flat_mesh(
                        f0 == GT::null_face() ? npos : face_index.at(f0),
                        f1 == GT::null_face() ? npos : face_index.at(f1), k});
   }
-  std::sort(records.begin(), records.end(),
-            [](const Edge_record& x, const Edge_record& y) { return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b); });
+  std::sort(records.begin(), records.end(), [](const Edge_record& x, const Edge_record& y) {
+    return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+  });
 
   m.on_border.assign(nv, 0);
   edge_list.clear();

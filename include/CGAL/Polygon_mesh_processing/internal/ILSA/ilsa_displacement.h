@@ -9,6 +9,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_ILSA_DISPLACEMENT_H
 
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/jacobi_sweeps.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
 #include <algorithm>
@@ -51,16 +52,16 @@ inline Ilsa_neighborhoods make_ilsa_neighborhoods(const Flat_mesh& m, const Vert
 
 /// Buffers reused across iterations, so the sweeps do not allocate.
 struct Ilsa_workspace {
-  std::vector<Vec3> next;       // Jacobi target buffer
-  std::vector<double> weights;  // α_ij, aligned with Ilsa_neighborhoods::neighbors.items
+  std::vector<Vec3> next;      // Jacobi target buffer
+  std::vector<double> weights; // α_ij, aligned with Ilsa_neighborhoods::neighbors.items
 };
 
 /// Algo. 2: fills `d` (one entry per vertex, zero for fixed ones) and returns
 /// the number of sweeps run. `tolerance` stops the sweeps once no displacement
 /// changes by more than it.
-inline std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const Ilsa_neighborhoods& nb,
-                                             double relax1, std::size_t sweeps, double tolerance,
-                                             std::vector<Vec3>& d, Ilsa_workspace& ws) {
+inline std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const Ilsa_neighborhoods& nb, double relax1,
+                                             std::size_t sweeps, double tolerance, std::vector<Vec3>& d,
+                                             Ilsa_workspace& ws) {
   const Adjacency& N = nb.neighbors;
   d.assign(pos.size(), Vec3::Zero());
   ws.weights.resize(N.items.size());
@@ -77,25 +78,15 @@ inline std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const
     d[v] = centroid / double(N.size(v)) - pos[v];
   }
 
-  ws.next = d;
-  std::size_t sweep = 0;
-  while (sweep < sweeps) {
-    ++sweep;
-    double largest_change = 0;
-    for (std::size_t v : nb.adjustable) {
-      Vec3 vec = Vec3::Zero();
-      double S = 0;
-      for (std::size_t k = N.begin[v]; k < N.begin[v + 1]; ++k) {
-        vec += ws.weights[k] * d[N.items[k]];
-        S += ws.weights[k];
-      }
-      ws.next[v] = (1. - relax1) * d[v] + (relax1 / S) * vec;
-      largest_change = (std::max)(largest_change, (ws.next[v] - d[v]).norm());
+  return run_jacobi_sweeps(nb.adjustable, sweeps, tolerance, d, ws.next, [&](std::size_t v) {
+    Vec3 vec = Vec3::Zero();
+    double S = 0;
+    for (std::size_t k = N.begin[v]; k < N.begin[v + 1]; ++k) {
+      vec += ws.weights[k] * d[N.items[k]];
+      S += ws.weights[k];
     }
-    std::swap(d, ws.next); // fixed vertices are zero in both buffers
-    if (largest_change <= tolerance) break;
-  }
-  return sweep;
+    return Vec3((1. - relax1) * d[v] + (relax1 / S) * vec);
+  });
 }
 
 } // namespace ILSA

@@ -111,8 +111,10 @@ public:
     Counts counts;
     for (std::size_t v : moved) {
       is_moved_[v] = 0;
-      if (tries_[v] > halvings_) ++counts.rejected;
-      else if (tries_[v] > 0) ++counts.shortened;
+      if (tries_[v] > halvings_)
+        ++counts.rejected;
+      else if (tries_[v] > 0)
+        ++counts.shortened;
     }
     return counts;
   }
@@ -156,7 +158,7 @@ private:
   double quality_floor_;
   std::size_t halvings_;
   std::vector<Vec3> reference_;
-  std::vector<std::size_t> stamp_; // round in which a face was found offending
+  std::vector<std::size_t> stamp_;   // round in which a face was found offending
   std::vector<std::size_t> tries_;   // halvings applied to a vertex's move
   std::vector<std::size_t> checked_; // round in which a vertex was queued for a check
   std::vector<unsigned char> is_moved_;

@@ -12,6 +12,7 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/jacobi_sweeps.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
 
 #include <algorithm>
@@ -24,17 +25,17 @@ namespace internal {
 namespace ILSA {
 
 struct Penalty_parameters {
-  double relax2 = 0.5;         // ilsa_penalty_relaxation
-  double mu = 0.1;             // ilsa_penalty_mu
-  double length_weight = 1.;   // wl
-  double area_weight = 1.;     // wa
-  std::size_t sweeps = 3;      // number_of_relaxation_steps
-  double tolerance = 0;        // stop once no displacement changes by more
+  double relax2 = 0.5;       // ilsa_penalty_relaxation
+  double mu = 0.1;           // ilsa_penalty_mu
+  double length_weight = 1.; // wl
+  double area_weight = 1.;   // wa
+  std::size_t sweeps = 3;    // number_of_relaxation_steps
+  double tolerance = 0;      // stop once no displacement changes by more
 };
 
 struct Penalty_workspace {
-  std::vector<Vec3> next;          // Jacobi target buffer
-  std::vector<double> beta;        // β = 1 / s(v, v_j, v_j+1), per face of the current mesh
+  std::vector<Vec3> next;   // Jacobi target buffer
+  std::vector<double> beta; // β = 1 / s(v, v_j, v_j+1), per face of the current mesh
 };
 
 /// Plane of the soft constraint c(x) = 0 (spec §4), as `a · (x − v) = k` with
@@ -50,9 +51,9 @@ inline std::pair<Vec3, double> penalty_plane(const Vec3& d, const Vec3& vertex_n
 
 /// Minimiser of Q(x; μ) for the smooth vertex `v`, relative to `pos[v]`.
 /// Every term is quadratic in x, so ∇Q = 0 is the 3x3 system H x = r.
-inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3>& pos,
-                                      const std::vector<Vec3>& d, const std::vector<double>& beta,
-                                      const Vec3& vertex_normal, std::size_t v, const Penalty_parameters& p) {
+inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3>& pos, const std::vector<Vec3>& d,
+                                      const std::vector<double>& beta, const Vec3& vertex_normal, std::size_t v,
+                                      const Penalty_parameters& p) {
   const Vec3& x0 = pos[v];
   auto pending = [&](std::size_t w) -> Vec3 { return pos[w] + d[w] - x0; };
 
@@ -85,9 +86,9 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 /// Algo. 3 on the smooth vertices of `nb`; `d` holds Algo. 2's displacements on
 /// entry and the adjusted ones on exit. Returns the number of sweeps run.
 inline std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
-                                                  const std::vector<Vec3>& vertex_normals,
-                                                  const Ilsa_neighborhoods& nb, const Penalty_parameters& p,
-                                                  std::vector<Vec3>& d, Penalty_workspace& ws) {
+                                                  const std::vector<Vec3>& vertex_normals, const Ilsa_neighborhoods& nb,
+                                                  const Penalty_parameters& p, std::vector<Vec3>& d,
+                                                  Penalty_workspace& ws) {
   // β_j from the current faces; a floor at 1e-3 of the mean area keeps a
   // degenerate face from swamping the star.
   ws.beta.resize(m.number_of_faces());
@@ -100,20 +101,10 @@ inline std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std:
   const double smallest_area = (std::max)(1e-3 * mean_area, 1e-300);
   for (double& b : ws.beta) b = 1. / (std::max)(b, smallest_area);
 
-  ws.next = d;
-  std::size_t sweep = 0;
-  while (sweep < p.sweeps) {
-    ++sweep;
-    double largest_change = 0;
-    for (std::size_t v : nb.smooth) {
-      const Vec3 d_new = minimize_penalty_function(m, pos, d, ws.beta, vertex_normals[v], v, p);
-      ws.next[v] = p.relax2 * d_new + (1. - p.relax2) * d[v];
-      largest_change = (std::max)(largest_change, (ws.next[v] - d[v]).norm());
-    }
-    std::swap(d, ws.next); // entries the sweep does not write are equal in both buffers
-    if (largest_change <= p.tolerance) break;
-  }
-  return sweep;
+  return run_jacobi_sweeps(nb.smooth, p.sweeps, p.tolerance, d, ws.next, [&](std::size_t v) {
+    const Vec3 d_new = minimize_penalty_function(m, pos, d, ws.beta, vertex_normals[v], v, p);
+    return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
+  });
 }
 
 } // namespace ILSA

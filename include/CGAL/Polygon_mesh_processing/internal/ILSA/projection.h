@@ -53,10 +53,10 @@ public:
   };
 
   /// `original` and `classification` must outlive the projector: it keeps references.
-  Projector(const Flat_mesh& original, const Vertex_classification& classification)
-      : m_(original), c_(classification) {
+  Projector(const Flat_mesh& original, const Vertex_classification& classification) : m_(original), c_(classification) {
     triangles_.reserve(m_.number_of_faces());
-    for (const auto& f : m_.faces) triangles_.emplace_back(point(m_.points[f[0]]), point(m_.points[f[1]]), point(m_.points[f[2]]));
+    for (const auto& f : m_.faces)
+      triangles_.emplace_back(point(m_.points[f[0]]), point(m_.points[f[1]]), point(m_.points[f[2]]));
     if (!triangles_.empty()) face_tree_.rebuild(triangles_.cbegin(), triangles_.cend());
 
     // Patches: faces connected across non-sharp edges (union-find).
@@ -100,16 +100,14 @@ private:
   static Vec3 vec(const Point& p) { return Vec3(p.x(), p.y(), p.z()); }
 
   // Faces sharing a vertex with face `home`, in its patch.
-  template <class F>
-  void for_each_face_near(std::size_t home, F f) const {
+  template <class F> void for_each_face_near(std::size_t home, F f) const {
     for (std::size_t w : m_.faces[home])
       for (const std::size_t* g = m_.vertex_faces.first(w); g != m_.vertex_faces.last(w); ++g)
         if (patch_[*g] == patch_[home]) f(*g);
   }
 
   // Sharp edges of the same crease sharing an endpoint with edge `home`.
-  template <class F>
-  void for_each_crease_edge_near(std::size_t home, F f) const {
+  template <class F> void for_each_crease_edge_near(std::size_t home, F f) const {
     for (std::size_t w : m_.edges[home])
       for (const std::size_t* e = m_.vertex_edges.first(w); e != m_.vertex_edges.last(w); ++e)
         if (c_.crease_of_edge[*e] == c_.crease_of_edge[home]) f(*e);

@@ -59,8 +59,8 @@ struct Vertex_classification {
 };
 
 struct Classification_options {
-  double feature_angle_degrees = 160.;     // dihedral angle θ_f below which an edge is sharp
-  bool fix_unattached_candidates = true;   // spec §1.4: candidate without sharp edge is a corner (paper) or smooth
+  double feature_angle_degrees = 160.;   // dihedral angle θ_f below which an edge is sharp
+  bool fix_unattached_candidates = true; // spec §1.4: candidate without sharp edge is a corner (paper) or smooth
   const std::vector<unsigned char>* constrained_vertices = nullptr; // user's vertex_is_constrained_map
   const std::vector<unsigned char>* constrained_edges = nullptr;    // user's edge_is_constrained_map
 };
@@ -130,7 +130,8 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
 
   if (opt.constrained_vertices)
     for (std::size_t v = 0; v < nv; ++v)
-      if ((*opt.constrained_vertices)[v] && c.type[v] != ILSA_vertex_type::Boundary) c.type[v] = ILSA_vertex_type::Corner;
+      if ((*opt.constrained_vertices)[v] && c.type[v] != ILSA_vertex_type::Boundary)
+        c.type[v] = ILSA_vertex_type::Corner;
 
   for (std::size_t v = 0; v < nv; ++v)
     if (c.type[v] != ILSA_vertex_type::Ridge) c.attached_sharp[v] = c.attached_edges[v] = {npos, npos};

@@ -1,0 +1,48 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The sweep loop shared by Algo. 2 and Algo. 3 (spec §3, "decided"): Jacobi
+// sweeps, every vertex reading the previous sweep's values and writing into a
+// second buffer, so the result does not depend on the vertex order.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_JACOBI_SWEEPS_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_JACOBI_SWEEPS_H
+
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+/// Runs at most `sweeps` sweeps of `update(v)` (the new value of `d[v]`, read
+/// from `d`) over `vertices`, stopping once no value changes by more than
+/// `tolerance`. `next` is the second buffer. Returns the number of sweeps run.
+template <class Update>
+std::size_t run_jacobi_sweeps(const std::vector<std::size_t>& vertices, std::size_t sweeps, double tolerance,
+                              std::vector<Vec3>& d, std::vector<Vec3>& next, const Update& update) {
+  next = d; // entries the sweeps do not write stay equal in both buffers
+  std::size_t sweep = 0;
+  while (sweep < sweeps) {
+    ++sweep;
+    double largest_change = 0;
+    for (std::size_t v : vertices) {
+      next[v] = update(v);
+      largest_change = (std::max)(largest_change, (next[v] - d[v]).norm());
+    }
+    std::swap(d, next);
+    if (largest_change <= tolerance) break;
+  }
+  return sweep;
+}
+
+} // namespace ILSA
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif
