@@ -76,7 +76,10 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamDescription{an instance of a geometric traits class}
  *     \cgalParamType{a model of `Kernel`}
  *     \cgalParamDefault{a kernel deduced from the point type, using `CGAL::Kernel_traits`}
- *     \cgalParamExtra{Accepted for compatibility with CGAL's smoothers and not used otherwise: the computation runs in `double` on coordinates relative to the bounding box; points are read with `CGAL::to_double()` and written with the point type's `(x, y, z)` constructor.} \cgalParamNEnd
+ *     \cgalParamExtra{Accepted for compatibility with CGAL's smoothers and not used otherwise: the computation
+ *                     runs in `double` on coordinates relative to the bounding box; points are read with
+ *                     `CGAL::to_double()` and written with the point type's `(x, y, z)` constructor.}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_iterations}
  *     \cgalParamDescription{the number of global iterations (the paper's max_global_iter_num)}
  *     \cgalParamType{unsigned int, at most 100000}
