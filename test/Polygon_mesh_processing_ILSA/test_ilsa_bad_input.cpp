@@ -138,21 +138,25 @@ void test_duplicated_and_non_manifold_vertices() {
   const Surface_mesh r = expect_processed(m, "non-manifold vertex");
   ILSA_CHECK(r.point(apex) == m.point(apex));
 
-  // Duplicated vertices: the grid's interior vertex 12 is split into two
-  // coincident vertices (a crack along half of its star).
-  Soup s = grid(4);
-  s.points.push_back(s.points[12]);
+  // Duplicated vertices: the grid's interior vertex (4, 4) is split into two
+  // coincident vertices (a crack along part of its star); the other interior
+  // vertices still move.
+  Soup s = grid(8);
+  const std::size_t split_vertex = 4 * 9 + 4, copy = s.points.size();
+  s.points.push_back(s.points[split_vertex]);
   std::size_t split = 0;
   for (auto& tr : s.triangles)
-    if ((tr[0] == 12 || tr[1] == 12 || tr[2] == 12) && split < 3) {
+    if ((tr[0] == split_vertex || tr[1] == split_vertex || tr[2] == split_vertex) && split < 3) {
       for (auto& i : tr)
-        if (i == 12) i = 25;
+        if (i == split_vertex) i = copy;
       ++split;
     }
   Surface_mesh cracked;
   PMP::polygon_soup_to_polygon_mesh(s.points, s.triangles, cracked);
-  ILSA_CHECK(num_vertices(cracked) == 26);
-  expect_processed(cracked, "duplicated vertices");
+  ILSA_CHECK(num_vertices(cracked) == 82);
+  perturb_on_surface(cracked, 0.3, 35);
+  const Surface_mesh smoothed = expect_processed(cracked, "duplicated vertices");
+  ILSA_CHECK(!same_points(smoothed, cracked));
 }
 
 template <class Mesh> void test_non_finite() {
