@@ -198,6 +198,14 @@ inline Soup soup_of(const Surface_mesh& m) {
   return soup;
 }
 
+/// Largest distance between corresponding points of two equally long lists.
+inline double max_difference(const std::vector<Point>& a, const std::vector<Point>& b) {
+  ILSA_CHECK(a.size() == b.size());
+  double d = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) d = (std::max)(d, std::sqrt(CGAL::squared_distance(a[i], b[i])));
+  return d;
+}
+
 template <class Mesh>
 std::vector<PMP::ILSA_vertex_type> types_of(const Mesh& m, std::map<std::string, std::size_t>* counts = nullptr) {
   using vd = typename boost::graph_traits<Mesh>::vertex_descriptor;

@@ -74,8 +74,6 @@ template <class Mesh> void test_fandisk() {
 // Horse with the paper's rule: the counts of the spec §1.4 table.
 void test_horse_counts() {
   const Surface_mesh m = read_mesh<Surface_mesh>(data_file("horse.ply"));
-  auto map = m.template property_map<Surface_mesh::Vertex_index, PMP::ILSA_vertex_type>("v:none");
-  CGAL_USE(map);
   std::map<Surface_mesh::Vertex_index, Type> types;
   const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types));
   assert(s.number_of_ridge_vertices == 1698);

@@ -41,12 +41,6 @@ Open_mesh build(const Soup& soup) {
   return om;
 }
 
-double max_difference(const std::vector<Point>& a, const std::vector<Point>& b) {
-  double d = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) d = (std::max)(d, std::sqrt(CGAL::squared_distance(a[i], b[i])));
-  return d;
-}
-
 int main() {
   Surface_mesh sm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
   perturb_on_surface(sm, 0.3, 21);

@@ -87,13 +87,6 @@ template <class Mesh> void test_sphere() {
   require(check_invariants(original, m, [](std::size_t, const Point&) { return false; }), "sphere");
 }
 
-double max_difference(const std::vector<Point>& a, const std::vector<Point>& b) {
-  assert(a.size() == b.size());
-  double d = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) d = (std::max)(d, std::sqrt(CGAL::squared_distance(a[i], b[i])));
-  return d;
-}
-
 // Same input as Surface_mesh and Polyhedron_3: same coordinates.
 void test_mesh_types_agree() {
   Surface_mesh sm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
