@@ -35,25 +35,29 @@ struct Options {
   std::string input = std::string(ILSA_DATA_DIR) + "/horse.ply";
   std::string output;
   unsigned int iterations = 20, relaxation_steps = 3;
-  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., quality_floor = 0.5;
+  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., quality_floor = 0.5,
+         fidelity_tolerance = 3e-4;
   bool fix_unattached = true, project = true, safety = true, monotone = false, verbose = false;
 };
 
-const char* usage = "usage: ilsa_smooth [INPUT [OUTPUT]] [options]\n"
-                    "  --iterations N          global iterations (default 20)\n"
-                    "  --relaxation-steps N    sweeps per iteration (default 3)\n"
-                    "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
-                    "  --relax2 X              penalty relaxation, (0,1] (default 0.5)\n"
-                    "  --mu X                  penalty parameter, > 0 (default 1)\n"
-                    "  --wl X                  length weight, >= 0 (default 1)\n"
-                    "  --wa X                  area weight, >= 0 (default 0.1)\n"
-                    "  --feature-angle DEG     dihedral feature angle, (0,180] (default 160)\n"
-                    "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
-                    "  --no-project            do not project back onto the input surface\n"
-                    "  --no-safety             no inversion check after projection\n"
-                    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1) (default 0.5)\n"
-                    "  --quality-monotone      reject moves that lower the star's minimum quality\n"
-                    "  --verbose               print what each iteration does\n";
+const char* usage =
+    "usage: ilsa_smooth [INPUT [OUTPUT]] [options]\n"
+    "  --iterations N          global iterations (default 20)\n"
+    "  --relaxation-steps N    sweeps per iteration (default 3)\n"
+    "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
+    "  --relax2 X              penalty relaxation, (0,1] (default 0.5)\n"
+    "  --mu X                  penalty parameter, > 0 (default 1)\n"
+    "  --wl X                  length weight, >= 0 (default 1)\n"
+    "  --wa X                  area weight, >= 0 (default 0.1)\n"
+    "  --feature-angle DEG     dihedral feature angle, (0,180] (default 160)\n"
+    "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
+    "  --no-project            do not project back onto the input surface\n"
+    "  --no-safety             no inversion check after projection\n"
+    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1) (default 0.5)\n"
+    "  --quality-monotone      reject moves that lower the star's minimum quality\n"
+    "  --fidelity-tolerance X  safety check: largest distance of the surface from an input vertex,\n"
+    "                          relative to the bounding-box diagonal, > 0, inf disables (default 3e-4)\n"
+    "  --verbose               print what each iteration does\n";
 
 double parse_number(const std::string& flag, const std::string& text) {
   std::size_t used = 0;
@@ -87,6 +91,8 @@ Options parse(int argc, char** argv) {
       {"--wa", [&](const std::string& s) { o.wa = parse_number("--wa", s); }},
       {"--feature-angle", [&](const std::string& s) { o.feature_angle = parse_number("--feature-angle", s); }},
       {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
+      {"--fidelity-tolerance",
+       [&](const std::string& s) { o.fidelity_tolerance = parse_number("--fidelity-tolerance", s); }},
       {"--fix-unattached", [&](const std::string& s) { o.fix_unattached = parse_count("--fix-unattached", s) != 0; }},
   };
   std::map<std::string, bool*> switches{{"--no-project", nullptr},
@@ -150,6 +156,7 @@ int run(const Options& o) {
                                               .use_safety_constraints(o.safety)
                                               .ilsa_quality_floor(o.quality_floor)
                                               .ilsa_quality_monotone(o.monotone)
+                                              .ilsa_fidelity_tolerance(o.fidelity_tolerance)
                                               .verbose(o.verbose));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

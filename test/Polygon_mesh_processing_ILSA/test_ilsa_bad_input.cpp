@@ -238,6 +238,9 @@ template <class Mesh> void test_invalid_parameters() {
   fails(CGAL::parameters::ilsa_area_weight(std::numeric_limits<double>::infinity()), "wa infinite");
   fails(CGAL::parameters::ilsa_feature_angle(-5.), "negative feature angle");
   fails(CGAL::parameters::ilsa_quality_floor(1.), "quality floor 1");
+  fails(CGAL::parameters::ilsa_fidelity_tolerance(0.), "fidelity tolerance 0");
+  fails(CGAL::parameters::ilsa_fidelity_tolerance(-1e-3), "negative fidelity tolerance");
+  fails(CGAL::parameters::ilsa_fidelity_tolerance(std::numeric_limits<double>::quiet_NaN()), "NaN fidelity tolerance");
   fails(CGAL::parameters::number_of_iterations(-3), "negative iterations");
   fails(CGAL::parameters::number_of_iterations(1000000000), "absurd iterations");
   fails(CGAL::parameters::number_of_relaxation_steps(0), "zero relaxation steps");

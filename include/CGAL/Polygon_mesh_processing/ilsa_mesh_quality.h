@@ -35,14 +35,15 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
-// Edge lengths, twice the area and the smallest angle of a triangle, in double.
+// Edge lengths, twice the area and (if asked for: it costs three atan2) the
+// smallest angle of a triangle, in double.
 struct Triangle_shape {
   std::array<double, 3> length; // opposite to vertex 0, 1, 2
   double double_area;
   double smallest_angle_degrees;
 };
 
-template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2) {
+template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2, bool with_angle = false) {
   const std::array<std::array<double, 3>, 3> v{
       {{CGAL::to_double(p0.x()), CGAL::to_double(p0.y()), CGAL::to_double(p0.z())},
        {CGAL::to_double(p1.x()), CGAL::to_double(p1.y()), CGAL::to_double(p1.z())},
@@ -64,6 +65,7 @@ template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const
     const auto a = sub(v[(i + 1) % 3], v[i]), b = sub(v[(i + 2) % 3], v[i]);
     const auto c = sub(v[(i + 2) % 3], v[(i + 1) % 3]);
     s.length[i] = std::sqrt(dot(c, c));
+    if (!with_angle) continue;
     const auto axb = cross(a, b);
     const double angle = std::atan2(std::sqrt(dot(axb, axb)), dot(a, b)) * 180. / 3.14159265358979323846;
     s.smallest_angle_degrees = (std::min)(s.smallest_angle_degrees, angle);
@@ -108,7 +110,7 @@ template <class P> double triangle_mean_ratio(const P& p0, const P& p1, const P&
 /// \ingroup PkgPMPILSARef
 /// Smallest angle of a triangle, in degrees (0 for a degenerate one).
 template <class P> double triangle_minimum_angle(const P& p0, const P& p1, const P& p2) {
-  const auto s = internal::ILSA::triangle_shape(p0, p1, p2);
+  const auto s = internal::ILSA::triangle_shape(p0, p1, p2, true);
   return s.double_area > 0 ? s.smallest_angle_degrees : 0.;
 }
 

@@ -148,6 +148,16 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamDescription{with the safety check on, shorten or drop every move that lowers the minimum aspect ratio
  * of the vertex's star (the same as a quality floor of 1)} \cgalParamType{`bool`} \cgalParamDefault{`false`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_fidelity_tolerance}
+ *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it takes the smoothed
+ * surface farther than this distance from the input surface where it was not already: from the input position of the
+ * vertex or of a neighbour to the smoothed faces around it (a bump or a crease bend cut off), or from the centroid and
+ * edge midpoints of the faces around the vertex to the input faces around them (a chord over a fold). Relative to the
+ * bounding-box diagonal. `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no
+ * such bound)}
+ *     \cgalParamType{`double`, positive}
+ *     \cgalParamDefault{`3e-4`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
  *     \cgalParamDescription{whether to print the vertex types and what each iteration did to `std::cerr`}
  *     \cgalParamType{`bool`}
@@ -192,6 +202,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const bool use_safety = choose_parameter(get_parameter(np, internal_np::use_safety_constraints), true);
   const double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), 0.5);
   const bool quality_monotone = choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), false);
+  const double fidelity_tolerance = choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), 3e-4);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   // (ilsa_feature_angle, ilsa_fix_unattached_candidates and the constraint
   // maps are read by read_classification_parameters() below.)
@@ -200,6 +211,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     if (!ok) throw ILSA_error(what);
   };
   require(quality_floor >= 0 && quality_floor < 1, "ilsa_quality_floor must be in [0, 1)");
+  require(fidelity_tolerance > 0, "ilsa_fidelity_tolerance must be positive (infinity disables the check)");
   require(double(iterations) >= 0 && double(iterations) <= 100000, "number_of_iterations must be in [0, 100000]");
   require(double(sweeps) >= 1 && double(sweeps) <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
   require(relax1 > 0 && relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
@@ -239,7 +251,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   if (neighborhoods.adjustable.empty() || iterations == 0) return stats;
 
   const ilsa::Projector projector(original, classification);
-  ilsa::Move_safety safety(original, quality_monotone ? 1. : quality_floor, 3);
+  ilsa::Move_safety safety(original, quality_monotone ? 1. : quality_floor, fidelity_tolerance, 3);
   auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
     if (!do_project) return ilsa::Projector::Result{q, home, false};
     return projector.project(v, q, current, home);

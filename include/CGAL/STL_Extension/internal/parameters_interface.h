@@ -23,6 +23,7 @@ CGAL_add_named_parameter(ilsa_area_weight_t, ilsa_area_weight, ilsa_area_weight)
 CGAL_add_named_parameter(ilsa_feature_angle_t, ilsa_feature_angle, ilsa_feature_angle)
 CGAL_add_named_parameter(ilsa_fix_unattached_candidates_t, ilsa_fix_unattached_candidates, ilsa_fix_unattached_candidates)
 CGAL_add_named_parameter(ilsa_quality_floor_t, ilsa_quality_floor, ilsa_quality_floor)
+CGAL_add_named_parameter(ilsa_fidelity_tolerance_t, ilsa_fidelity_tolerance, ilsa_fidelity_tolerance)
 CGAL_add_named_parameter(ilsa_quality_monotone_t, ilsa_quality_monotone, ilsa_quality_monotone)
 // clang-format on
 

@@ -80,6 +80,40 @@ inline Vec3 area_vector(const std::vector<Vec3>& pos, const std::array<std::size
 }
 
 /// Unit normal of triangle `f`, or zero for a degenerate triangle.
+/// Squared distance from `p` to the segment `ab`.
+inline double squared_distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double l = ab.squaredNorm();
+  const double t = l > 0 ? (std::min)(1., (std::max)(0., (p - a).dot(ab) / l)) : 0.;
+  return (p - a - t * ab).squaredNorm();
+}
+
+/// Squared distance from `p` to the triangle `abc` (closest-point regions as in
+/// Ericson, Real-Time Collision Detection, 5.1.5).
+inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return ap.squaredNorm();
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return bp.squaredNorm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (ap - (d1 / (d1 - d3)) * ab).squaredNorm();
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return cp.squaredNorm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (ap - (d2 / (d2 - d6)) * ac).squaredNorm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return (bp - ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b)).squaredNorm();
+  const double sum = va + vb + vc;
+  if (!(sum > 0)) // degenerate triangle: closest of its edges
+    return (std::min)({squared_distance_to_segment(p, a, b), squared_distance_to_segment(p, b, c),
+                       squared_distance_to_segment(p, c, a)});
+  return (ap - (vb / sum) * ab - (vc / sum) * ac).squaredNorm();
+}
+
 inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<std::size_t, 3>& f) {
   const Vec3 n = area_vector(pos, f);
   const double l = n.norm();

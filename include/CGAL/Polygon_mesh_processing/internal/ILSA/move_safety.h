@@ -3,8 +3,10 @@
 //
 // Safety check after projection (`use_safety_constraints`): no triangle may
 // reverse its orientation with respect to the original surface or collapse,
-// and the worst triangle around a moved vertex may not get worse if it ends
-// below the quality floor.
+// the worst triangle around a moved vertex may not get worse if it ends below
+// the quality floor, and the smoothed surface may not move away from an input
+// vertex by more than the fidelity tolerance (it may not cut off a bump or a
+// crease bend of the input).
 // A vertex of an offending triangle has its move halved (and re-projected) a
 // few times, then dropped for this iteration. Since the moves are applied all
 // at once (Jacobi), the check is repeated until no triangle offends; it ends
@@ -20,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -35,8 +38,11 @@ public:
 
   /// `quality_floor`: a move may not lower the minimum aspect ratio of the
   /// vertex's star below this value (1: never lower it, the quality-monotone mode).
-  Move_safety(const Flat_mesh& original, double quality_floor, std::size_t halvings)
-      : m_(original), quality_floor_(quality_floor), halvings_(halvings) {
+  /// `fidelity_tolerance`: largest distance (normalised units: the bounding-box
+  /// diagonal is 1) between an input vertex and the smoothed surface around it
+  /// that a move may create or increase; infinity disables the check.
+  Move_safety(const Flat_mesh& original, double quality_floor, double fidelity_tolerance, std::size_t halvings)
+      : m_(original), quality_floor_(quality_floor), fidelity_tolerance_(fidelity_tolerance), halvings_(halvings) {
     // Reference orientation of each face: its input normal, or for a face that
     // is degenerate in the input the sum of its neighbours' normals. A face
     // folded in the input keeps its orientation: unfolding it would be a flip
@@ -84,6 +90,7 @@ public:
           const double q = star_quality(next, v);
           bad = q < quality_floor_ && q < star_quality(previous, v);
         }
+        if (!bad && std::isfinite(fidelity_tolerance_)) bad = deviates(previous, next, v);
         if (bad) offenders.push_back(v);
       }
       for (std::size_t v : offenders) {
@@ -144,6 +151,81 @@ private:
     return false;
   }
 
+  // Whether the move of `v` takes the smoothed surface farther than the
+  // tolerance from the input surface, in either direction, where it was not
+  // already: from the input position of `v` or of a neighbour to the smoothed
+  // surface (a bump or crease bend cut off), or from the faces around `v` to
+  // the input surface (a chord over a fold). Distances are measured to the
+  // faces around the vertices concerned and, when those are not close enough,
+  // to the faces around their neighbours: vertices travel less than an edge
+  // length per iteration, so these faces cover the points measured.
+  bool deviates(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t v) const {
+    auto cuts = [&](std::size_t w) {
+      const double now = vertex_deviation(next, w);
+      return now > fidelity_tolerance_ && now > vertex_deviation(previous, w);
+    };
+    if (cuts(v)) return true;
+    for (const std::size_t* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w)
+      if (cuts(*w)) return true;
+    for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+      const double now = face_deviation(next, *f);
+      if (now > fidelity_tolerance_ && now > face_deviation(previous, *f)) return true;
+    }
+    return false;
+  }
+
+  // Largest distance from the centroid and the edge midpoints of face `f` at
+  // `pos` to the input surface around the face's vertices.
+  double face_deviation(const std::vector<Vec3>& pos, std::size_t f) const {
+    const auto& t = m_.faces[f];
+    const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
+    const Vec3 samples[4] = {(a + b + c) / 3., (a + b) / 2., (b + c) / 2., (c + a) / 2.};
+    double worst = 0;
+    for (const Vec3& x : samples) {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < 3 && !scan_input(x, t[k], best); ++k) {
+      }
+      for (std::size_t k = 0; k < 3 && best > fidelity_tolerance_ * fidelity_tolerance_; ++k)
+        for (const std::size_t* u = m_.vertex_neighbors.first(t[k]); u != m_.vertex_neighbors.last(t[k]); ++u)
+          if (scan_input(x, *u, best)) break;
+      worst = (std::max)(worst, best);
+    }
+    return std::sqrt(worst);
+  }
+
+  // Updates `best` with the squared distance from `x` to the input faces
+  // around vertex `u`; true once it is within the tolerance.
+  bool scan_input(const Vec3& x, std::size_t u, double& best) const {
+    const auto& p = m_.points;
+    for (const std::size_t* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f) {
+      const auto& t = m_.faces[*f];
+      best = (std::min)(best, squared_distance_to_triangle(x, p[t[0]], p[t[1]], p[t[2]]));
+      if (best <= fidelity_tolerance_ * fidelity_tolerance_) return true;
+    }
+    return false;
+  }
+
+  // Distance from the input position of `w` to the surface around `w` at
+  // `pos` (its faces, then its neighbours' faces); exact once it is at most
+  // the tolerance, when the scan stops, an upper bound otherwise.
+  double vertex_deviation(const std::vector<Vec3>& pos, std::size_t w) const {
+    const Vec3& p = m_.points[w];
+    const double tolerance2 = fidelity_tolerance_ * fidelity_tolerance_;
+    double best = std::numeric_limits<double>::infinity();
+    auto scan = [&](std::size_t u) {
+      for (const std::size_t* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f) {
+        const auto& t = m_.faces[*f];
+        best = (std::min)(best, squared_distance_to_triangle(p, pos[t[0]], pos[t[1]], pos[t[2]]));
+        if (best <= tolerance2) return true;
+      }
+      return false;
+    };
+    if (!scan(w))
+      for (const std::size_t* u = m_.vertex_neighbors.first(w); u != m_.vertex_neighbors.last(w); ++u)
+        if (scan(*u)) break;
+    return std::sqrt(best);
+  }
+
   // Worst aspect ratio around `v`.
   double star_quality(const std::vector<Vec3>& pos, std::size_t v) const {
     double q = 1.;
@@ -156,6 +238,7 @@ private:
 
   const Flat_mesh& m_;
   double quality_floor_;
+  double fidelity_tolerance_;
   std::size_t halvings_;
   std::vector<Vec3> reference_;
   std::vector<std::size_t> stamp_;   // round in which a face was found offending
