@@ -21,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -179,51 +180,40 @@ private:
   double face_deviation(const std::vector<Vec3>& pos, std::size_t f) const {
     const auto& t = m_.faces[f];
     const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
-    const Vec3 samples[4] = {(a + b + c) / 3., (a + b) / 2., (b + c) / 2., (c + a) / 2.};
     double worst = 0;
-    for (const Vec3& x : samples) {
-      double best = std::numeric_limits<double>::infinity();
-      for (std::size_t k = 0; k < 3 && !scan_input(x, t[k], best); ++k) {
-      }
-      for (std::size_t k = 0; k < 3 && best > fidelity_tolerance_ * fidelity_tolerance_; ++k)
-        for (const std::size_t* u = m_.vertex_neighbors.first(t[k]); u != m_.vertex_neighbors.last(t[k]); ++u)
-          if (scan_input(x, *u, best)) break;
-      worst = (std::max)(worst, best);
-    }
+    for (const Vec3& x : {Vec3((a + b + c) / 3.), Vec3((a + b) / 2.), Vec3((b + c) / 2.), Vec3((c + a) / 2.)})
+      worst = (std::max)(worst, squared_distance_near(x, m_.points, t));
     return std::sqrt(worst);
   }
 
-  // Updates `best` with the squared distance from `x` to the input faces
-  // around vertex `u`; true once it is within the tolerance.
-  bool scan_input(const Vec3& x, std::size_t u, double& best) const {
-    const auto& p = m_.points;
-    for (const std::size_t* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f) {
-      const auto& t = m_.faces[*f];
-      best = (std::min)(best, squared_distance_to_triangle(x, p[t[0]], p[t[1]], p[t[2]]));
-      if (best <= fidelity_tolerance_ * fidelity_tolerance_) return true;
-    }
-    return false;
+  // Distance from the input position of `w` to the surface around `w` at `pos`.
+  double vertex_deviation(const std::vector<Vec3>& pos, std::size_t w) const {
+    return std::sqrt(squared_distance_near(m_.points[w], pos, std::array<std::size_t, 1>{w}));
   }
 
-  // Distance from the input position of `w` to the surface around `w` at
-  // `pos` (its faces, then its neighbours' faces); exact once it is at most
-  // the tolerance, when the scan stops, an upper bound otherwise.
-  double vertex_deviation(const std::vector<Vec3>& pos, std::size_t w) const {
-    const Vec3& p = m_.points[w];
+  // Squared distance from `x` to the faces (at positions `pos`) around the
+  // vertices `around`, then, if none is within the tolerance, around their
+  // neighbours. Exact once within the tolerance, where the scan stops; an
+  // upper bound otherwise.
+  template <std::size_t N>
+  double squared_distance_near(const Vec3& x, const std::vector<Vec3>& pos,
+                               const std::array<std::size_t, N>& around) const {
     const double tolerance2 = fidelity_tolerance_ * fidelity_tolerance_;
     double best = std::numeric_limits<double>::infinity();
     auto scan = [&](std::size_t u) {
       for (const std::size_t* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f) {
         const auto& t = m_.faces[*f];
-        best = (std::min)(best, squared_distance_to_triangle(p, pos[t[0]], pos[t[1]], pos[t[2]]));
+        best = (std::min)(best, squared_distance_to_triangle(x, pos[t[0]], pos[t[1]], pos[t[2]]));
         if (best <= tolerance2) return true;
       }
       return false;
     };
-    if (!scan(w))
-      for (const std::size_t* u = m_.vertex_neighbors.first(w); u != m_.vertex_neighbors.last(w); ++u)
-        if (scan(*u)) break;
-    return std::sqrt(best);
+    for (std::size_t u : around)
+      if (scan(u)) return best;
+    for (std::size_t u : around)
+      for (const std::size_t* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
+        if (scan(*w)) return best;
+    return best;
   }
 
   // Worst aspect ratio around `v`.
