@@ -21,6 +21,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -35,8 +36,8 @@ struct Options {
   std::string input = std::string(ILSA_DATA_DIR) + "/horse.ply";
   std::string output;
   unsigned int iterations = 20, relaxation_steps = 3;
-  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., quality_floor = 0.5,
-         fidelity_tolerance = 3e-4;
+  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., fidelity_tolerance = 3e-4;
+  std::optional<double> quality_floor; // the library's default when not given
   bool fix_unattached = true, project = true, safety = true, monotone = false, verbose = false;
 };
 
@@ -53,7 +54,8 @@ const char* usage =
     "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
     "  --no-project            do not project back onto the input surface\n"
     "  --no-safety             no inversion check after projection\n"
-    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1) (default 0.5)\n"
+    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1)\n"
+    "                          (default: 0.5, or the input's minimum q if higher)\n"
     "  --quality-monotone      reject moves that lower the star's minimum quality\n"
     "  --fidelity-tolerance X  safety check: largest distance of the surface from an input vertex,\n"
     "                          relative to the bounding-box diagonal, > 0, inf disables (default 3e-4)\n"
@@ -142,22 +144,23 @@ int run(const Options& o) {
 
   const Mesh original = mesh;
   const auto start = std::chrono::steady_clock::now();
-  const PMP::ILSA_statistics s =
-      PMP::smooth_surface_mesh_ilsa(mesh, CGAL::parameters::number_of_iterations(o.iterations)
-                                              .number_of_relaxation_steps(o.relaxation_steps)
-                                              .ilsa_relaxation(o.relax1)
-                                              .ilsa_penalty_relaxation(o.relax2)
-                                              .ilsa_penalty_mu(o.mu)
-                                              .ilsa_length_weight(o.wl)
-                                              .ilsa_area_weight(o.wa)
-                                              .ilsa_feature_angle(o.feature_angle)
-                                              .ilsa_fix_unattached_candidates(o.fix_unattached)
-                                              .do_project(o.project)
-                                              .use_safety_constraints(o.safety)
-                                              .ilsa_quality_floor(o.quality_floor)
-                                              .ilsa_quality_monotone(o.monotone)
-                                              .ilsa_fidelity_tolerance(o.fidelity_tolerance)
-                                              .verbose(o.verbose));
+  const auto np = CGAL::parameters::number_of_iterations(o.iterations)
+                      .number_of_relaxation_steps(o.relaxation_steps)
+                      .ilsa_relaxation(o.relax1)
+                      .ilsa_penalty_relaxation(o.relax2)
+                      .ilsa_penalty_mu(o.mu)
+                      .ilsa_length_weight(o.wl)
+                      .ilsa_area_weight(o.wa)
+                      .ilsa_feature_angle(o.feature_angle)
+                      .ilsa_fix_unattached_candidates(o.fix_unattached)
+                      .do_project(o.project)
+                      .use_safety_constraints(o.safety)
+                      .ilsa_quality_monotone(o.monotone)
+                      .ilsa_fidelity_tolerance(o.fidelity_tolerance)
+                      .verbose(o.verbose);
+  const PMP::ILSA_statistics s = o.quality_floor
+                                     ? PMP::smooth_surface_mesh_ilsa(mesh, np.ilsa_quality_floor(*o.quality_floor))
+                                     : PMP::smooth_surface_mesh_ilsa(mesh, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   print_quality("after ", PMP::mesh_quality_ilsa(mesh));

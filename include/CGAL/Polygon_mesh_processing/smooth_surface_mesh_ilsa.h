@@ -16,6 +16,7 @@
 #endif
 
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
@@ -142,7 +143,8 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it lowers the minimum
  * aspect ratio of the vertex's star to a value below this floor. 0 disables this part of the check}
  *     \cgalParamType{`double`, in [0, 1)}
- *     \cgalParamDefault{`0.5`}
+ *     \cgalParamDefault{the larger of `0.5` and the minimum aspect ratio of the input faces, so that the minimum
+ * aspect ratio of the output is never below the input's}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_quality_monotone}
  *     \cgalParamDescription{with the safety check on, shorten or drop every move that lowers the minimum aspect ratio
@@ -200,7 +202,10 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), 0.1);
   const bool do_project = choose_parameter(get_parameter(np, internal_np::do_project), true);
   const bool use_safety = choose_parameter(get_parameter(np, internal_np::use_safety_constraints), true);
-  const double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), 0.5);
+  // Without an explicit floor: 0.5, raised to the input's minimum aspect ratio (set below, once the input is read).
+  constexpr bool default_floor =
+      parameters::is_default_parameter<NamedParameters, internal_np::ilsa_quality_floor_t>::value;
+  double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), 0.5);
   const bool quality_monotone = choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), false);
   const double fidelity_tolerance = choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), 3e-4);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
@@ -250,6 +255,14 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const ilsa::Ilsa_neighborhoods neighborhoods = ilsa::make_ilsa_neighborhoods(original, classification, movable);
   if (neighborhoods.adjustable.empty() || iterations == 0) return stats;
 
+  if (default_floor) {
+    // The minimum aspect ratio of the output is then never below the input's.
+    double input_minimum = 1.;
+    for (const auto& t : original.faces)
+      input_minimum = (std::min)(input_minimum, triangle_aspect_ratio(original.points[t[0]], original.points[t[1]],
+                                                                      original.points[t[2]]));
+    quality_floor = (std::max)(quality_floor, input_minimum);
+  }
   const ilsa::Projector projector(original, classification);
   ilsa::Move_safety safety(original, quality_monotone ? 1. : quality_floor, fidelity_tolerance, 3);
   auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
