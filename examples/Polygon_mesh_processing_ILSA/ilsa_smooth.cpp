@@ -8,12 +8,16 @@
 // face order and is written with 17 significant digits, only on success.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -39,6 +43,7 @@ struct Options {
   double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., fidelity_tolerance = 3e-4;
   std::optional<double> quality_floor; // the library's default when not given
   bool fix_unattached = true, project = true, safety = true, monotone = false, verbose = false;
+  unsigned int worst = 0; // faces listed by --worst
 };
 
 const char* usage =
@@ -59,7 +64,10 @@ const char* usage =
     "  --quality-monotone      reject moves that lower the star's minimum quality\n"
     "  --fidelity-tolerance X  safety check: largest distance of the surface from an input vertex,\n"
     "                          relative to the bounding-box diagonal, > 0, inf disables (default 3e-4)\n"
-    "  --verbose               print what each iteration does\n";
+    "  --verbose               print what each iteration does\n"
+    "  --worst N               list the N worst faces after smoothing: aspect ratio before and after,\n"
+    "                          type of each vertex and whether it moved, smallest dihedral angle of\n"
+    "                          the face's edges in the input\n";
 
 double parse_number(const std::string& flag, const std::string& text) {
   std::size_t used = 0;
@@ -96,6 +104,7 @@ Options parse(int argc, char** argv) {
       {"--fidelity-tolerance",
        [&](const std::string& s) { o.fidelity_tolerance = parse_number("--fidelity-tolerance", s); }},
       {"--fix-unattached", [&](const std::string& s) { o.fix_unattached = parse_count("--fix-unattached", s) != 0; }},
+      {"--worst", [&](const std::string& s) { o.worst = parse_count("--worst", s); }},
   };
   std::map<std::string, bool*> switches{{"--no-project", nullptr},
                                         {"--no-safety", nullptr},
@@ -132,6 +141,41 @@ void print_quality(const char* label, const PMP::ILSA_quality_summary& q) {
   std::cout << std::fixed << std::setprecision(4) << label << ": aspect ratio q min " << q.min_aspect_ratio << " mean "
             << q.mean_aspect_ratio << ", q<0.3 " << std::setprecision(2) << 100. * q.share_below_threshold
             << " %, min angle " << q.min_angle << " deg, degenerate faces " << q.number_of_degenerate_faces << "\n";
+}
+
+// The `count` worst faces of `smoothed` (same connectivity as `original`), with
+// what holds each back: fixed vertices, vertices that did not move, folds of the
+// input (a small dihedral angle).
+void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int count, const Options& o) {
+  std::map<Mesh::Vertex_index, PMP::ILSA_vertex_type> types;
+  PMP::classify_vertices_ilsa(
+      original, boost::make_assoc_property_map(types),
+      CGAL::parameters::ilsa_feature_angle(o.feature_angle).ilsa_fix_unattached_candidates(o.fix_unattached));
+  auto aspect_ratio = [](const Mesh& m, Mesh::Face_index f) {
+    const auto h = halfedge(f, m);
+    return PMP::triangle_aspect_ratio(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
+  };
+  std::vector<std::pair<double, Mesh::Face_index>> ranked;
+  for (auto f : faces(smoothed)) ranked.emplace_back(aspect_ratio(smoothed, f), f);
+  count = (std::min)(count, (unsigned int)ranked.size());
+  std::partial_sort(ranked.begin(), ranked.begin() + count, ranked.end());
+  const double pi = 3.14159265358979323846;
+  for (unsigned int i = 0; i < count; ++i) {
+    const auto f = ranked[i].second;
+    std::cout << std::fixed << std::setprecision(4) << "worst face " << std::size_t(f) << ": q "
+              << aspect_ratio(original, f) << " -> " << ranked[i].first << ", vertices";
+    double smallest_dihedral = 180;
+    for (auto h : halfedges_around_face(halfedge(f, original), original)) {
+      const auto v = target(h, original);
+      std::cout << " " << PMP::to_string(types[v]) << (original.point(v) == smoothed.point(v) ? " (not moved)" : "");
+      const auto g = face(opposite(h, original), original);
+      if (g == Mesh::null_face()) continue;
+      const auto n = PMP::compute_face_normal(f, original), m = PMP::compute_face_normal(g, original);
+      smallest_dihedral =
+          (std::min)(smallest_dihedral, 180. - std::acos((std::max)(-1., (std::min)(1., n * m))) * 180. / pi);
+    }
+    std::cout << std::setprecision(1) << ", smallest input dihedral angle " << smallest_dihedral << " deg\n";
+  }
 }
 
 int run(const Options& o) {
@@ -177,6 +221,8 @@ int run(const Options& o) {
             << " along edges " << f.max_feature_deviation;
   if (f.closed) std::cout << ", volume change " << f.volume_change;
   std::cout << " [distances relative to the bounding-box diagonal]\n";
+
+  if (o.worst > 0) print_worst_faces(original, mesh, o.worst, o);
 
   if (!o.output.empty()) {
     // Write next to the target, then rename: a failed write leaves no partial file.
