@@ -1,7 +1,8 @@
 // Randomised test: the bundled meshes, perturbed along their surface without
 // folding, smoothed with random valid parameters; every run must keep the
 // invariants (no flipped or collapsed face, fixed vertices bit-identical,
-// vertices on the input surface, no NaN).
+// vertices on the input surface, no NaN, no face below the input's minimum
+// aspect ratio or the quality floor, whichever is lower).
 //
 // ILSA_FUZZ_CASES (environment) sets the number of cases (the default is the
 // short CI run), ILSA_FUZZ_FIRST the first case: case N is the same in every run.
@@ -36,19 +37,23 @@ int main() {
     const double angle = 100 + 75 * unit(rng);
     const bool fix = unit(rng) < 0.5, monotone = unit(rng) < 0.2;
     const double floor = 0.5 * unit(rng);
+    const bool default_floor = unit(rng) < 0.3; // the library's: max(0.5, input minimum)
 
     Surface_mesh m = original;
-    PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::number_of_iterations(iterations)
-                                         .number_of_relaxation_steps(steps)
-                                         .ilsa_relaxation(relax1)
-                                         .ilsa_penalty_relaxation(relax2)
-                                         .ilsa_penalty_mu(mu)
-                                         .ilsa_length_weight(wl)
-                                         .ilsa_area_weight(wa)
-                                         .ilsa_feature_angle(angle)
-                                         .ilsa_fix_unattached_candidates(fix)
-                                         .ilsa_quality_floor(floor)
-                                         .ilsa_quality_monotone(monotone));
+    const auto np = CGAL::parameters::number_of_iterations(iterations)
+                        .number_of_relaxation_steps(steps)
+                        .ilsa_relaxation(relax1)
+                        .ilsa_penalty_relaxation(relax2)
+                        .ilsa_penalty_mu(mu)
+                        .ilsa_length_weight(wl)
+                        .ilsa_area_weight(wa)
+                        .ilsa_feature_angle(angle)
+                        .ilsa_fix_unattached_candidates(fix)
+                        .ilsa_quality_monotone(monotone);
+    if (default_floor)
+      PMP::smooth_surface_mesh_ilsa(m, np);
+    else
+      PMP::smooth_surface_mesh_ilsa(m, np.ilsa_quality_floor(floor));
     // Ridge vertices are checked by the smoothing test; here: surface, flips, fixed vertices, NaN.
     std::map<Surface_mesh::Vertex_index, PMP::ILSA_vertex_type> types;
     PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
@@ -63,16 +68,21 @@ int main() {
     const auto before = PMP::mesh_quality_ilsa(original), after = PMP::mesh_quality_ilsa(m);
     collapsed = after.number_of_degenerate_faces > before.number_of_degenerate_faces;
     const auto f = PMP::mesh_fidelity_ilsa(original, m, angle);
+    // No face ends below the input's minimum or the floor, whichever is lower
+    // (up to the rounding of writing back the package's normalised coordinates).
+    const double effective_floor = monotone ? 1. : default_floor ? (std::max)(0.5, before.min_aspect_ratio) : floor;
+    const bool kept_minimum = after.min_aspect_ratio >= (std::min)(before.min_aspect_ratio, effective_floor) - 1e-12;
     const bool ok = f.number_of_flipped_faces == 0 && f.max_vertex_distance <= 1e-9 && fixed_moved == 0 &&
-                    non_finite == 0 && !collapsed;
+                    non_finite == 0 && !collapsed && kept_minimum;
     if (!ok) {
       ++failures;
       std::cout << "case " << c << " (" << names[which] << ", iterations " << iterations << ", steps " << steps
                 << ", relax1 " << relax1 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa
-                << ", angle " << angle << ", fix " << fix << ", floor " << floor << ", monotone " << monotone
-                << "): flipped " << f.number_of_flipped_faces << ", distance " << f.max_vertex_distance
-                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
-                << std::endl;
+                << ", angle " << angle << ", fix " << fix << ", floor " << (default_floor ? -1. : floor)
+                << ", monotone " << monotone << "): flipped " << f.number_of_flipped_faces << ", distance "
+                << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
+                << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
+                << after.min_aspect_ratio << std::endl;
       const auto n0 = face_normals_of(original), n1 = face_normals_of(m);
       for (auto fd : faces(m))
         if (n0[std::size_t(fd)] * n1[std::size_t(fd)] < 0) {
