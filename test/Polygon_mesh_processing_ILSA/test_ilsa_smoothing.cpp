@@ -287,9 +287,9 @@ template <class Mesh> void test_minimum_quality_kept() {
   PMP::smooth_surface_mesh_ilsa(fixed_floor, CGAL::parameters::ilsa_quality_floor(0.5));
   const auto q0 = PMP::mesh_quality_ilsa(original), q = PMP::mesh_quality_ilsa(by_default),
              q_fixed = PMP::mesh_quality_ilsa(fixed_floor);
-  std::cout << "hemisphere min q " << q0.min_aspect_ratio << " -> " << q.min_aspect_ratio << " (floor 0.5: "
-            << q_fixed.min_aspect_ratio << "), mean " << q0.mean_aspect_ratio << " -> " << q.mean_aspect_ratio
-            << std::endl;
+  std::cout << "hemisphere min q " << q0.min_aspect_ratio << " -> " << q.min_aspect_ratio
+            << " (floor 0.5: " << q_fixed.min_aspect_ratio << "), mean " << q0.mean_aspect_ratio << " -> "
+            << q.mean_aspect_ratio << std::endl;
   // Positions are written back from the package's normalised coordinates:
   // allow for that rounding, nothing more.
   assert(q.min_aspect_ratio >= q0.min_aspect_ratio - 1e-12);

@@ -259,8 +259,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     // The minimum aspect ratio of the output is then never below the input's.
     double input_minimum = 1.;
     for (const auto& t : original.faces)
-      input_minimum = (std::min)(input_minimum, triangle_aspect_ratio(original.points[t[0]], original.points[t[1]],
-                                                                      original.points[t[2]]));
+      input_minimum = (std::min)(
+          input_minimum, triangle_aspect_ratio(original.points[t[0]], original.points[t[1]], original.points[t[2]]));
     quality_floor = (std::max)(quality_floor, input_minimum);
   }
   const ilsa::Projector projector(original, classification);
