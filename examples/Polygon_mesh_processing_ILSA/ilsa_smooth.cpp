@@ -8,7 +8,6 @@
 // face order and is written with 17 significant digits, only on success.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
@@ -159,7 +158,6 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
   for (auto f : faces(smoothed)) ranked.emplace_back(aspect_ratio(smoothed, f), f);
   count = (std::min)(count, (unsigned int)ranked.size());
   std::partial_sort(ranked.begin(), ranked.begin() + count, ranked.end());
-  const double pi = 3.14159265358979323846;
   for (unsigned int i = 0; i < count; ++i) {
     const auto f = ranked[i].second;
     std::cout << std::fixed << std::setprecision(4) << "worst face " << std::size_t(f) << ": q "
@@ -168,11 +166,13 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
     for (auto h : halfedges_around_face(halfedge(f, original), original)) {
       const auto v = target(h, original);
       std::cout << " " << PMP::to_string(types[v]) << (original.point(v) == smoothed.point(v) ? " (not moved)" : "");
-      const auto g = face(opposite(h, original), original);
-      if (g == Mesh::null_face()) continue;
-      const auto n = PMP::compute_face_normal(f, original), m = PMP::compute_face_normal(g, original);
+      const auto o = opposite(h, original);
+      if (is_border(o, original)) continue;
+      const auto& p = original.point(source(h, original));
+      const auto& r = original.point(target(next(h, original), original));
+      const auto& t = original.point(target(next(o, original), original));
       smallest_dihedral =
-          (std::min)(smallest_dihedral, 180. - std::acos((std::max)(-1., (std::min)(1., n * m))) * 180. / pi);
+          (std::min)(smallest_dihedral, std::abs(CGAL::approximate_dihedral_angle(p, original.point(v), r, t)));
     }
     std::cout << std::setprecision(1) << ", smallest input dihedral angle " << smallest_dihedral << " deg\n";
   }

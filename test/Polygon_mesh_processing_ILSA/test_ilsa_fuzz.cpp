@@ -54,7 +54,7 @@ int main() {
       PMP::smooth_surface_mesh_ilsa(m, np);
     else
       PMP::smooth_surface_mesh_ilsa(m, np.ilsa_quality_floor(floor));
-    // Ridge vertices are checked by the smoothing test; here: surface, flips, fixed vertices, NaN.
+    // Ridge vertices are checked by the smoothing test; here: surface, flips, fixed vertices, NaN, minimum q.
     std::map<Surface_mesh::Vertex_index, PMP::ILSA_vertex_type> types;
     PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
                                 CGAL::parameters::ilsa_feature_angle(angle).ilsa_fix_unattached_candidates(fix));
