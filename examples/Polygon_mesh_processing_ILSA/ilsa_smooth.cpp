@@ -41,7 +41,7 @@ struct Options {
   unsigned int iterations = 20, relaxation_steps = 3;
   double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., fidelity_tolerance = 3e-4;
   std::optional<double> quality_floor; // the library's default when not given
-  bool fix_unattached = true, project = true, safety = true, monotone = false, verbose = false;
+  bool fix_unattached = true, project = true, safety = true, monotone = false, reject_worsening = true, verbose = false;
   unsigned int worst = 0; // faces listed by --worst
 };
 
@@ -61,6 +61,7 @@ const char* usage =
     "  --quality-floor X       safety check: no triangle pushed below this q, [0,1)\n"
     "                          (default: 0.5, or the input's minimum q if higher)\n"
     "  --quality-monotone      reject moves that lower the star's minimum quality\n"
+    "  --reject-worsening 0|1  safety check: drop moves that lower the star's mean quality (default 1)\n"
     "  --fidelity-tolerance X  safety check: largest distance of the surface from an input vertex,\n"
     "                          relative to the bounding-box diagonal, > 0, inf disables (default 3e-4)\n"
     "  --verbose               print what each iteration does\n"
@@ -103,6 +104,8 @@ Options parse(int argc, char** argv) {
       {"--fidelity-tolerance",
        [&](const std::string& s) { o.fidelity_tolerance = parse_number("--fidelity-tolerance", s); }},
       {"--fix-unattached", [&](const std::string& s) { o.fix_unattached = parse_count("--fix-unattached", s) != 0; }},
+      {"--reject-worsening",
+       [&](const std::string& s) { o.reject_worsening = parse_count("--reject-worsening", s) != 0; }},
       {"--worst", [&](const std::string& s) { o.worst = parse_count("--worst", s); }},
   };
   std::map<std::string, bool*> switches{{"--no-project", nullptr},
@@ -200,6 +203,7 @@ int run(const Options& o) {
                       .do_project(o.project)
                       .use_safety_constraints(o.safety)
                       .ilsa_quality_monotone(o.monotone)
+                      .ilsa_reject_worsening_moves(o.reject_worsening)
                       .ilsa_fidelity_tolerance(o.fidelity_tolerance)
                       .verbose(o.verbose);
   const PMP::ILSA_statistics s = o.quality_floor

@@ -37,7 +37,8 @@ int main() {
     const double angle = 100 + 75 * unit(rng);
     const bool fix = unit(rng) < 0.5, monotone = unit(rng) < 0.2;
     const double floor = 0.5 * unit(rng);
-    const bool default_floor = unit(rng) < 0.3; // the library's: max(0.5, input minimum)
+    const bool default_floor = unit(rng) < 0.3;    // the library's: max(0.5, input minimum)
+    const bool reject_worsening = unit(rng) < 0.7; // the default, or the paper's acceptance
 
     Surface_mesh m = original;
     const auto np = CGAL::parameters::number_of_iterations(iterations)
@@ -49,7 +50,8 @@ int main() {
                         .ilsa_area_weight(wa)
                         .ilsa_feature_angle(angle)
                         .ilsa_fix_unattached_candidates(fix)
-                        .ilsa_quality_monotone(monotone);
+                        .ilsa_quality_monotone(monotone)
+                        .ilsa_reject_worsening_moves(reject_worsening);
     if (default_floor)
       PMP::smooth_surface_mesh_ilsa(m, np);
     else
@@ -79,10 +81,10 @@ int main() {
       std::cout << "case " << c << " (" << names[which] << ", iterations " << iterations << ", steps " << steps
                 << ", relax1 " << relax1 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa
                 << ", angle " << angle << ", fix " << fix << ", floor " << (default_floor ? -1. : floor)
-                << ", monotone " << monotone << "): flipped " << f.number_of_flipped_faces << ", distance "
-                << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
-                << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
-                << after.min_aspect_ratio << std::endl;
+                << ", monotone " << monotone << ", reject worsening " << reject_worsening << "): flipped "
+                << f.number_of_flipped_faces << ", distance " << f.max_vertex_distance << ", fixed moved "
+                << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed << ", min q "
+                << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << std::endl;
       const auto n0 = face_normals_of(original), n1 = face_normals_of(m);
       for (auto fd : faces(m))
         if (n0[std::size_t(fd)] * n1[std::size_t(fd)] < 0) {

@@ -3,7 +3,8 @@
 // face, better mean quality; planar grids stay planar; Surface_mesh and
 // Polyhedron_3 agree; the result does not depend on the vertex order (Jacobi);
 // named parameters chain in both orders; the range overload fixes the rest;
-// the default quality floor keeps the input's minimum aspect ratio.
+// the default quality floor keeps the input's minimum aspect ratio; no move
+// that lowers its star's mean quality is kept.
 #include "ilsa_test_utils.h"
 
 #include <CGAL/AABB_segment_primitive.h>
@@ -297,7 +298,51 @@ template <class Mesh> void test_minimum_quality_kept() {
   assert(q.mean_aspect_ratio > q0.mean_aspect_ratio);
 }
 
+// ilsa_reject_worsening_moves (default): after one iteration, no vertex's move
+// lowers the mean aspect ratio of its star, the neighbours being where they
+// ended; with the paper's acceptance some moves do.
+template <class Mesh> void test_worsening_moves_rejected() {
+  const Mesh original = read_mesh<Mesh>(data_file("elephant.off"));
+  auto worsened_stars = [&](const Mesh& smoothed) {
+    const auto vpm = get(CGAL::vertex_point, smoothed);
+    const auto input_vpm = get(CGAL::vertex_point, original);
+    auto star_mean = [&](auto v, const Point& at) {
+      double sum = 0;
+      int n = 0;
+      for (auto f : faces_around_target(halfedge(v, smoothed), smoothed)) {
+        if (f == boost::graph_traits<Mesh>::null_face()) continue;
+        std::vector<Point> p;
+        for (auto w : vertices_around_face(halfedge(f, smoothed), smoothed)) p.push_back(w == v ? at : get(vpm, w));
+        sum += PMP::triangle_aspect_ratio(p[0], p[1], p[2]);
+        ++n;
+      }
+      return sum / n;
+    };
+    // Both meshes are copies of one another: their vertex ranges run in step.
+    std::size_t worsened = 0, moved = 0;
+    auto input_vertex = vertices(original).begin();
+    for (auto v : vertices(smoothed)) {
+      const Point before = get(input_vpm, *input_vertex++);
+      if (get(vpm, v) == before) continue;
+      ++moved;
+      if (star_mean(v, get(vpm, v)) < star_mean(v, before) - 1e-9) ++worsened;
+    }
+    std::cout << "one iteration: " << moved << " vertices moved, " << worsened << " lowered their star's mean q"
+              << std::endl;
+    assert(moved > 0);
+    return worsened;
+  };
+  Mesh checked = original, unchecked = original;
+  PMP::smooth_surface_mesh_ilsa(checked, CGAL::parameters::number_of_iterations(1));
+  PMP::smooth_surface_mesh_ilsa(unchecked,
+                                CGAL::parameters::number_of_iterations(1).ilsa_reject_worsening_moves(false));
+  assert(worsened_stars(checked) == 0);
+  assert(worsened_stars(unchecked) > 0);
+}
+
 int main() {
+  test_worsening_moves_rejected<Surface_mesh>();
+  test_worsening_moves_rejected<Polyhedron>();
   test_minimum_quality_kept<Surface_mesh>();
   test_minimum_quality_kept<Polyhedron>();
   test_fidelity_tolerance<Surface_mesh>();

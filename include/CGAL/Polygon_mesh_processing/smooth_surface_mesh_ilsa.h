@@ -150,6 +150,12 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamDescription{with the safety check on, shorten or drop every move that lowers the minimum aspect ratio
  * of the vertex's star (the same as a quality floor of 1)} \cgalParamType{`bool`} \cgalParamDefault{`false`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_reject_worsening_moves}
+ *     \cgalParamDescription{with the safety check on, drop a vertex's move if it lowers the mean aspect ratio of the
+ * triangles around the vertex, its neighbours being at their new positions ("smart" Laplacian smoothing; not in the
+ * paper: `false` restores the paper's acceptance of every move the other checks allow)}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fidelity_tolerance}
  *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it takes the smoothed
  * surface farther than this distance from the input surface where it was not already: from the input position of the
@@ -207,6 +213,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
       parameters::is_default_parameter<NamedParameters, internal_np::ilsa_quality_floor_t>::value;
   double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), 0.5);
   const bool quality_monotone = choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), false);
+  const bool reject_worsening = choose_parameter(get_parameter(np, internal_np::ilsa_reject_worsening_moves), true);
   const double fidelity_tolerance = choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), 3e-4);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   // (ilsa_feature_angle, ilsa_fix_unattached_candidates and the constraint
@@ -264,7 +271,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     quality_floor = (std::max)(quality_floor, input_minimum);
   }
   const ilsa::Projector projector(original, classification);
-  ilsa::Move_safety safety(original, quality_monotone ? 1. : quality_floor, fidelity_tolerance, 3);
+  ilsa::Move_safety safety(original, quality_monotone ? 1. : quality_floor, fidelity_tolerance, reject_worsening, 3);
   auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
     if (!do_project) return ilsa::Projector::Result{q, home, false};
     return projector.project(v, q, current, home);

@@ -25,6 +25,7 @@ CGAL_add_named_parameter(ilsa_fix_unattached_candidates_t, ilsa_fix_unattached_c
 CGAL_add_named_parameter(ilsa_quality_floor_t, ilsa_quality_floor, ilsa_quality_floor)
 CGAL_add_named_parameter(ilsa_fidelity_tolerance_t, ilsa_fidelity_tolerance, ilsa_fidelity_tolerance)
 CGAL_add_named_parameter(ilsa_quality_monotone_t, ilsa_quality_monotone, ilsa_quality_monotone)
+CGAL_add_named_parameter(ilsa_reject_worsening_moves_t, ilsa_reject_worsening_moves, ilsa_reject_worsening_moves)
 // clang-format on
 
 // Checked by the package's public headers: if CGAL's own list was picked up

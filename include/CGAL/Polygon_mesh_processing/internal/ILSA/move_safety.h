@@ -42,8 +42,12 @@ public:
   /// `fidelity_tolerance`: largest distance (normalised units: the bounding-box
   /// diagonal is 1) between an input vertex and the smoothed surface around it
   /// that a move may create or increase; infinity disables the check.
-  Move_safety(const Flat_mesh& original, double quality_floor, double fidelity_tolerance, std::size_t halvings)
-      : m_(original), quality_floor_(quality_floor), fidelity_tolerance_(fidelity_tolerance), halvings_(halvings) {
+  /// `reject_worsening`: drop a move that lowers the mean aspect ratio of the
+  /// vertex's star, the neighbours being at their new positions.
+  Move_safety(const Flat_mesh& original, double quality_floor, double fidelity_tolerance, bool reject_worsening,
+              std::size_t halvings)
+      : m_(original), quality_floor_(quality_floor), fidelity_tolerance_(fidelity_tolerance),
+        reject_worsening_(reject_worsening), halvings_(halvings) {
     // Reference orientation of each face: its input normal, or for a face that
     // is degenerate in the input the sum of its neighbours' normals. A face
     // folded in the input keeps its orientation: unfolding it would be a flip
@@ -90,6 +94,13 @@ public:
           // The star's worst triangle may not get worse and end below the floor.
           const double q = star_quality(next, v);
           bad = q < quality_floor_ && q < star_quality(previous, v);
+        }
+        if (!bad && reject_worsening_ &&
+            star_mean_quality(next, v, next[v]) < star_mean_quality(next, v, previous[v])) {
+          // Dropped at once: a shorter step along a worsening direction rarely
+          // helps, and each halving costs a re-projection.
+          bad = true;
+          tries_[v] = halvings_;
         }
         if (!bad && std::isfinite(fidelity_tolerance_)) bad = deviates(previous, next, v);
         if (bad) offenders.push_back(v);
@@ -216,6 +227,17 @@ private:
     return best;
   }
 
+  // Mean aspect ratio around `v`, with `v` at `at` and the others at `pos`.
+  double star_mean_quality(const std::vector<Vec3>& pos, std::size_t v, const Vec3& at) const {
+    auto point = [&](std::size_t w) -> const Vec3& { return w == v ? at : pos[w]; };
+    double sum = 0.;
+    for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+      const auto& t = m_.faces[*f];
+      sum += triangle_aspect_ratio(point(t[0]), point(t[1]), point(t[2]));
+    }
+    return sum / double(m_.vertex_faces.size(v));
+  }
+
   // Worst aspect ratio around `v`.
   double star_quality(const std::vector<Vec3>& pos, std::size_t v) const {
     double q = 1.;
@@ -229,6 +251,7 @@ private:
   const Flat_mesh& m_;
   double quality_floor_;
   double fidelity_tolerance_;
+  bool reject_worsening_;
   std::size_t halvings_;
   std::vector<Vec3> reference_;
   std::vector<std::size_t> stamp_;   // round in which a face was found offending
