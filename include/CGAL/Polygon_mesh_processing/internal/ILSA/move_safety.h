@@ -92,11 +92,11 @@ public:
           bad = offends(previous, next, *f);
         if (!bad && quality_floor_ > 0) {
           // The star's worst triangle may not get worse and end below the floor.
-          const double q = star_quality(next, v);
-          bad = q < quality_floor_ && q < star_quality(previous, v);
+          const double q = star_quality(next, v, next[v]).worst;
+          bad = q < quality_floor_ && q < star_quality(previous, v, previous[v]).worst;
         }
         if (!bad && reject_worsening_ &&
-            star_mean_quality(next, v, next[v]) < star_mean_quality(next, v, previous[v])) {
+            star_quality(next, v, next[v]).mean < star_quality(next, v, previous[v]).mean) {
           // Dropped at once: a shorter step along a worsening direction rarely
           // helps, and each halving costs a re-projection.
           bad = true;
@@ -227,24 +227,21 @@ private:
     return best;
   }
 
-  // Mean aspect ratio around `v`, with `v` at `at` and the others at `pos`.
-  double star_mean_quality(const std::vector<Vec3>& pos, std::size_t v, const Vec3& at) const {
-    auto point = [&](std::size_t w) -> const Vec3& { return w == v ? at : pos[w]; };
-    double sum = 0.;
-    for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-      const auto& t = m_.faces[*f];
-      sum += triangle_aspect_ratio(point(t[0]), point(t[1]), point(t[2]));
-    }
-    return sum / double(m_.vertex_faces.size(v));
-  }
+  struct Star_quality {
+    double worst = 1., mean = 0.;
+  };
 
-  // Worst aspect ratio around `v`.
-  double star_quality(const std::vector<Vec3>& pos, std::size_t v) const {
-    double q = 1.;
+  // Worst and mean aspect ratio around `v`, with `v` at `at` and the others at `pos`.
+  Star_quality star_quality(const std::vector<Vec3>& pos, std::size_t v, const Vec3& at) const {
+    auto point = [&](std::size_t w) -> const Vec3& { return w == v ? at : pos[w]; };
+    Star_quality q;
     for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
       const auto& t = m_.faces[*f];
-      q = (std::min)(q, triangle_aspect_ratio(pos[t[0]], pos[t[1]], pos[t[2]]));
+      const double r = triangle_aspect_ratio(point(t[0]), point(t[1]), point(t[2]));
+      q.worst = (std::min)(q.worst, r);
+      q.mean += r;
     }
+    q.mean /= double((std::max)(m_.vertex_faces.size(v), std::size_t(1)));
     return q;
   }
 
