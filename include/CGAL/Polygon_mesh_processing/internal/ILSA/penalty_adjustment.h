@@ -15,6 +15,8 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/jacobi_sweeps.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <utility>
 #include <vector>
@@ -80,6 +82,13 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
   H += (2. / p.mu) * plane.first * plane.first.transpose();
   r += (2. / p.mu) * plane.second * plane.first;
 
+  // Every term is positive semi-definite and the length term adds 2 wl I, so H
+  // is positive definite with condition number at most trace(H) / (2 wl):
+  // Cholesky is then as robust as the SVD and about ten times cheaper.
+  if (2. * p.length_weight >= 1e-8 * H.trace()) {
+    const Eigen::LLT<Eigen::Matrix3d> llt(H);
+    if (llt.info() == Eigen::Success) return llt.solve(r);
+  }
   return solve_by_svd(H, r, 1e-12);
 }
 
