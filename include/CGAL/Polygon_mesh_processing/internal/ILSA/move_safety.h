@@ -62,6 +62,10 @@ public:
     reference_.resize(m_.number_of_faces());
     for (std::size_t f = 0; f < m_.number_of_faces(); ++f) reference_[f] = own[f].isZero(0) ? neighbors[f] : own[f];
     stamp_.assign(m_.number_of_faces(), 0);
+    face_round_.assign(m_.number_of_faces(), 0);
+    face_now_.assign(m_.number_of_faces(), 0.);
+    vertex_round_.assign(m_.number_of_vertices(), 0);
+    vertex_now_.assign(m_.number_of_vertices(), 0.);
     tries_.assign(m_.number_of_vertices(), 0);
     checked_.assign(m_.number_of_vertices(), 0);
     is_moved_.assign(m_.number_of_vertices(), 0);
@@ -90,13 +94,12 @@ public:
         bool bad = false;
         for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v) && !bad; ++f)
           bad = offends(previous, next, *f);
-        if (!bad && quality_floor_ > 0) {
-          // The star's worst triangle may not get worse and end below the floor.
-          const double q = star_quality(next, v, next[v]).worst;
-          bad = q < quality_floor_ && q < star_quality(previous, v, previous[v]).worst;
-        }
-        if (!bad && reject_worsening_ &&
-            star_quality(next, v, next[v]).mean < star_quality(next, v, previous[v]).mean) {
+        const bool rate = !bad && (quality_floor_ > 0 || reject_worsening_);
+        const Star_quality now = rate ? star_quality(next, v, next[v]) : Star_quality();
+        // The star's worst triangle may not get worse and end below the floor.
+        if (!bad && quality_floor_ > 0)
+          bad = now.worst < quality_floor_ && now.worst < star_quality(previous, v, previous[v]).worst;
+        if (!bad && reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
           // Dropped at once: a shorter step along a worsening direction rarely
           // helps, and each halving costs a re-projection.
           bad = true;
@@ -171,16 +174,20 @@ private:
   // faces around the vertices concerned and, when those are not close enough,
   // to the faces around their neighbours: vertices travel less than an edge
   // length per iteration, so these faces cover the points measured.
-  bool deviates(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t v) const {
+  // The distances at `next` are kept for the round: `next` does not change
+  // while a round checks its vertices, and neighbouring vertices share them.
+  bool deviates(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t v) {
     auto cuts = [&](std::size_t w) {
-      const double now = vertex_deviation(next, w);
+      if (vertex_round_[w] != round_) vertex_round_[w] = round_, vertex_now_[w] = vertex_deviation(next, w);
+      const double now = vertex_now_[w];
       return now > fidelity_tolerance_ && now > vertex_deviation(previous, w);
     };
     if (cuts(v)) return true;
     for (const std::size_t* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w)
       if (cuts(*w)) return true;
     for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-      const double now = face_deviation(next, *f);
+      if (face_round_[*f] != round_) face_round_[*f] = round_, face_now_[*f] = face_deviation(next, *f);
+      const double now = face_now_[*f];
       if (now > fidelity_tolerance_ && now > face_deviation(previous, *f)) return true;
     }
     return false;
@@ -193,7 +200,7 @@ private:
     const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
     double worst = 0;
     for (const Vec3& x : {Vec3((a + b + c) / 3.), Vec3((a + b) / 2.), Vec3((b + c) / 2.), Vec3((c + a) / 2.)})
-      worst = (std::max)(worst, squared_distance_near(x, m_.points, t));
+      worst = (std::max)(worst, squared_distance_near(x, m_.points, t, f));
     return std::sqrt(worst);
   }
 
@@ -204,19 +211,25 @@ private:
 
   // Squared distance from `x` to the faces (at positions `pos`) around the
   // vertices `around`, then, if none is within the tolerance, around their
-  // neighbours. Exact once within the tolerance, where the scan stops; an
-  // upper bound otherwise.
+  // neighbours. Beyond the tolerance the value is the minimum over all these
+  // faces (an upper bound of the distance to the surface); within it the scan
+  // stops at the first face in reach, so the value depends on the scan order,
+  // and callers only compare it with the tolerance. `first`, a face around
+  // `around` likely to be close, is looked at first.
   template <std::size_t N>
-  double squared_distance_near(const Vec3& x, const std::vector<Vec3>& pos,
-                               const std::array<std::size_t, N>& around) const {
+  double squared_distance_near(const Vec3& x, const std::vector<Vec3>& pos, const std::array<std::size_t, N>& around,
+                               std::size_t first = npos) const {
     const double tolerance2 = fidelity_tolerance_ * fidelity_tolerance_;
     double best = std::numeric_limits<double>::infinity();
+    auto distance = [&](std::size_t f) {
+      const auto& t = m_.faces[f];
+      best = (std::min)(best, squared_distance_to_triangle(x, pos[t[0]], pos[t[1]], pos[t[2]]));
+      return best <= tolerance2;
+    };
+    if (first != npos && distance(first)) return best;
     auto scan = [&](std::size_t u) {
-      for (const std::size_t* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f) {
-        const auto& t = m_.faces[*f];
-        best = (std::min)(best, squared_distance_to_triangle(x, pos[t[0]], pos[t[1]], pos[t[2]]));
-        if (best <= tolerance2) return true;
-      }
+      for (const std::size_t* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f)
+        if (*f != first && distance(*f)) return true;
       return false;
     };
     for (std::size_t u : around)
@@ -251,9 +264,11 @@ private:
   bool reject_worsening_;
   std::size_t halvings_;
   std::vector<Vec3> reference_;
-  std::vector<std::size_t> stamp_;   // round in which a face was found offending
-  std::vector<std::size_t> tries_;   // halvings applied to a vertex's move
-  std::vector<std::size_t> checked_; // round in which a vertex was queued for a check
+  std::vector<std::size_t> stamp_;                     // round in which a face was found offending
+  std::vector<std::size_t> tries_;                     // halvings applied to a vertex's move
+  std::vector<std::size_t> checked_;                   // round in which a vertex was queued for a check
+  std::vector<std::size_t> face_round_, vertex_round_; // round of the deviations below
+  std::vector<double> face_now_, vertex_now_;          // face_deviation / vertex_deviation at `next`
   std::vector<unsigned char> is_moved_;
   std::size_t round_ = 0;
 };
