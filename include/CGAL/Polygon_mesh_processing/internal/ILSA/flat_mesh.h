@@ -79,7 +79,6 @@ inline Vec3 area_vector(const std::vector<Vec3>& pos, const std::array<std::size
   return (pos[f[1]] - pos[f[0]]).cross(pos[f[2]] - pos[f[0]]);
 }
 
-/// Unit normal of triangle `f`, or zero for a degenerate triangle.
 /// Squared distance from `p` to the segment `ab`.
 inline double squared_distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
@@ -114,6 +113,7 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
   return (ap - (vb / sum) * ab - (vc / sum) * ac).squaredNorm();
 }
 
+/// Unit normal of triangle `f`, or zero for a degenerate triangle.
 inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<std::size_t, 3>& f) {
   const Vec3 n = area_vector(pos, f);
   const double l = n.norm();
