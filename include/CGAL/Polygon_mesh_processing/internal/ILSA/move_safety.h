@@ -221,15 +221,15 @@ private:
                                std::size_t first = npos) const {
     const double tolerance2 = fidelity_tolerance_ * fidelity_tolerance_;
     double best = std::numeric_limits<double>::infinity();
-    auto distance = [&](std::size_t f) {
+    auto in_reach = [&](std::size_t f) {
       const auto& t = m_.faces[f];
       best = (std::min)(best, squared_distance_to_triangle(x, pos[t[0]], pos[t[1]], pos[t[2]]));
       return best <= tolerance2;
     };
-    if (first != npos && distance(first)) return best;
+    if (first != npos && in_reach(first)) return best;
     auto scan = [&](std::size_t u) {
       for (const std::size_t* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f)
-        if (*f != first && distance(*f)) return true;
+        if (*f != first && in_reach(*f)) return true;
       return false;
     };
     for (std::size_t u : around)
