@@ -40,6 +40,7 @@ struct Options {
   std::string output;
   unsigned int iterations = 20, relaxation_steps = 3;
   double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., fidelity_tolerance = 3e-4;
+  std::optional<double> kink_angle;    // the library's default (180 - feature angle) when not given
   std::optional<double> quality_floor; // the library's default when not given
   bool fix_unattached = true, project = true, safety = true, monotone = false, reject_worsening = true, verbose = false;
   unsigned int worst = 0; // faces listed by --worst
@@ -56,6 +57,8 @@ const char* usage =
     "  --wa X                  area weight, >= 0 (default 0.1)\n"
     "  --feature-angle DEG     dihedral feature angle, (0,180] (default 160)\n"
     "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
+    "  --kink-angle DEG        fix a crease vertex where the crease turns by more, [0,180],\n"
+    "                          180 disables (default: 180 - feature angle)\n"
     "  --no-project            do not project back onto the input surface\n"
     "  --no-safety             no inversion check after projection\n"
     "  --quality-floor X       safety check: no triangle pushed below this q, [0,1)\n"
@@ -100,6 +103,7 @@ Options parse(int argc, char** argv) {
       {"--wl", [&](const std::string& s) { o.wl = parse_number("--wl", s); }},
       {"--wa", [&](const std::string& s) { o.wa = parse_number("--wa", s); }},
       {"--feature-angle", [&](const std::string& s) { o.feature_angle = parse_number("--feature-angle", s); }},
+      {"--kink-angle", [&](const std::string& s) { o.kink_angle = parse_number("--kink-angle", s); }},
       {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
       {"--fidelity-tolerance",
        [&](const std::string& s) { o.fidelity_tolerance = parse_number("--fidelity-tolerance", s); }},
@@ -150,9 +154,10 @@ void print_quality(const char* label, const PMP::ILSA_quality_summary& q) {
 // input (a small dihedral angle).
 void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int count, const Options& o) {
   std::map<Mesh::Vertex_index, PMP::ILSA_vertex_type> types;
-  PMP::classify_vertices_ilsa(
-      original, boost::make_assoc_property_map(types),
-      CGAL::parameters::ilsa_feature_angle(o.feature_angle).ilsa_fix_unattached_candidates(o.fix_unattached));
+  PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
+                              CGAL::parameters::ilsa_feature_angle(o.feature_angle)
+                                  .ilsa_fix_unattached_candidates(o.fix_unattached)
+                                  .ilsa_crease_kink_angle(o.kink_angle.value_or(180. - o.feature_angle)));
   auto aspect_ratio = [](const Mesh& m, Mesh::Face_index f) {
     const auto h = halfedge(f, m);
     return PMP::triangle_aspect_ratio(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
@@ -200,6 +205,7 @@ int run(const Options& o) {
                       .ilsa_area_weight(o.wa)
                       .ilsa_feature_angle(o.feature_angle)
                       .ilsa_fix_unattached_candidates(o.fix_unattached)
+                      .ilsa_crease_kink_angle(o.kink_angle.value_or(180. - o.feature_angle))
                       .do_project(o.project)
                       .use_safety_constraints(o.safety)
                       .ilsa_quality_monotone(o.monotone)
@@ -213,16 +219,18 @@ int run(const Options& o) {
 
   print_quality("after ", PMP::mesh_quality_ilsa(mesh));
   std::cout << "vertices: " << s.number_of_smooth_vertices << " smooth, " << s.number_of_ridge_vertices << " ridge, "
-            << s.number_of_corner_vertices << " corner, " << s.number_of_boundary_vertices << " boundary\n"
+            << s.number_of_corner_vertices << " corner (" << s.number_of_kink_vertices << " crease kinks), "
+            << s.number_of_boundary_vertices << " boundary\n"
             << "moves: " << s.number_of_moves << " accepted, " << s.number_of_shortened_moves << " shortened, "
             << s.number_of_rejected_moves << " rejected by the safety check\n"
             << std::setprecision(3) << "time: " << seconds << " s for " << s.number_of_iterations << " iterations\n";
-  const PMP::ILSA_fidelity_summary f = PMP::mesh_fidelity_ilsa(original, mesh, o.feature_angle);
+  const PMP::ILSA_fidelity_summary f =
+      PMP::mesh_fidelity_ilsa(original, mesh, CGAL::parameters::ilsa_feature_angle(o.feature_angle));
   std::cout << std::scientific << std::setprecision(2) << "fidelity: " << f.number_of_flipped_faces
             << " flipped faces, vertex distance to input max " << f.max_vertex_distance << " mean "
-            << f.mean_vertex_distance << ", Hausdorff " << f.hausdorff_distance << ", sharp edges ("
-            << f.number_of_sharp_edges << ") deviation at vertices " << f.max_feature_vertex_deviation
-            << " along edges " << f.max_feature_deviation;
+            << f.mean_vertex_distance << ", Hausdorff " << f.hausdorff_distance << ", crease deviation ("
+            << f.number_of_sharp_edges << " sharp edges, both ways) max " << f.max_crease_deviation << " mean "
+            << f.mean_crease_deviation;
   if (f.closed) std::cout << ", volume change " << f.volume_change;
   std::cout << " [distances relative to the bounding-box diagonal]\n";
 

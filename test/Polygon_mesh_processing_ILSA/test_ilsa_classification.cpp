@@ -47,8 +47,10 @@ template <class Mesh> void test_fandisk() {
   const Mesh m = read_mesh<Mesh>(data_file("fandisk.off"));
   std::map<std::string, std::size_t> counts;
   const auto types = types_of(m, &counts);
-  assert(counts["ridge"] == 823);
-  assert(counts["corner"] == 38);
+  // The paper's rule gives 823 ridge and 38 corner vertices; one ridge vertex
+  // is a crease kink by default (checked below).
+  assert(counts["ridge"] == 823 - 1);
+  assert(counts["corner"] == 38 + 1);
   assert(counts["boundary"] == 0);
 
   using ed = typename boost::graph_traits<Mesh>::edge_descriptor;
@@ -65,20 +67,52 @@ template <class Mesh> void test_fandisk() {
   // The §1.4 rule: with the paper's rule fandisk has 2 candidates without a
   // sharp edge (spec table); smoothing them turns exactly those into smooth vertices.
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Type> relaxed;
+  const auto paper = CGAL::parameters::ilsa_crease_kink_angle(180.); // the paper's four-type rule, no kinks
   const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(relaxed),
-                                             CGAL::parameters::ilsa_fix_unattached_candidates(false));
+                                             paper.ilsa_fix_unattached_candidates(false));
   assert(s.number_of_corner_vertices == 36);
   assert(s.number_of_ridge_vertices == 823);
+  assert(s.number_of_kink_vertices == 0);
+
+  // Kinks (user manual): one ridge vertex of the paper's rule, where the crease
+  // folds back (its two sharp edges meet at about 19 degrees), becomes a corner.
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Type> with_kinks;
+  const auto k = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(with_kinks));
+  const auto p = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(relaxed), paper);
+  assert(k.number_of_kink_vertices == 1);
+  assert(k.number_of_ridge_vertices == p.number_of_ridge_vertices - 1);
+  assert(k.number_of_corner_vertices == p.number_of_corner_vertices + 1);
+  for (auto v : vertices(m)) {
+    if (with_kinks[v] == relaxed[v]) continue;
+    assert(relaxed[v] == Type::Ridge && with_kinks[v] == Type::Corner);
+    std::vector<Point> ends;
+    for (auto h : halfedges_around_target(v, m))
+      if (sharp[edge(h, m)]) ends.push_back(get(CGAL::vertex_point, m, source(h, m)));
+    assert(ends.size() == 2);
+    const Point& x = get(CGAL::vertex_point, m, v);
+    const double c =
+        (ends[0] - x) * (ends[1] - x) / std::sqrt((ends[0] - x).squared_length() * (ends[1] - x).squared_length());
+    assert(c > std::cos(160. * 3.14159265358979323846 / 180.)); // the edges meet at less than 160 degrees
+  }
 }
 
 // Horse with the paper's rule: the counts of the spec §1.4 table.
 void test_horse_counts() {
   const Surface_mesh m = read_mesh<Surface_mesh>(data_file("horse.ply"));
   std::map<Surface_mesh::Vertex_index, Type> types;
-  const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types));
+  const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types),
+                                             CGAL::parameters::ilsa_crease_kink_angle(180.));
   assert(s.number_of_ridge_vertices == 1698);
   assert(s.number_of_corner_vertices == 2792);
   assert(s.number_of_smooth_vertices == 48485 - 1698 - 2792);
+  // The default kink rule turns ridge vertices into corners, nothing else; a
+  // larger kink angle fewer.
+  const auto k = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types));
+  const auto k45 = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types),
+                                               CGAL::parameters::ilsa_crease_kink_angle(45.));
+  assert(k.number_of_kink_vertices > k45.number_of_kink_vertices && k45.number_of_kink_vertices > 0);
+  assert(k.number_of_ridge_vertices + k.number_of_kink_vertices == 1698);
+  assert(k.number_of_corner_vertices == 2792 + k.number_of_kink_vertices);
   // A smaller feature angle finds fewer features.
   const auto s120 =
       PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), CGAL::parameters::ilsa_feature_angle(120.));
@@ -133,6 +167,15 @@ void test_parameter_check() {
     bool thrown = false;
     try {
       PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(t), CGAL::parameters::ilsa_feature_angle(angle));
+    } catch (const PMP::ILSA_error&) {
+      thrown = true;
+    }
+    assert(thrown);
+  }
+  for (double kink : {-1., 181., std::nan("")}) {
+    bool thrown = false;
+    try {
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(t), CGAL::parameters::ilsa_crease_kink_angle(kink));
     } catch (const PMP::ILSA_error&) {
       thrown = true;
     }

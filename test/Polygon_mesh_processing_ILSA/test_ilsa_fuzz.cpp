@@ -2,7 +2,9 @@
 // folding, smoothed with random valid parameters; every run must keep the
 // invariants (no flipped or collapsed face, fixed vertices bit-identical,
 // vertices on the input surface, no NaN, no face below the input's minimum
-// aspect ratio or the quality floor, whichever is lower).
+// aspect ratio or the quality floor, whichever is lower, the input's sharp
+// edges and the same edges of the result within the fidelity tolerance of
+// each other, both ways).
 //
 // ILSA_FUZZ_CASES (environment) sets the number of cases (the default is the
 // short CI run), ILSA_FUZZ_FIRST the first case: case N is the same in every run.
@@ -39,6 +41,8 @@ int main() {
     const double floor = 0.5 * unit(rng);
     const bool default_floor = unit(rng) < 0.3;    // the library's: max(0.5, input minimum)
     const bool reject_worsening = unit(rng) < 0.7; // the default, or the paper's acceptance
+    const double draw = unit(rng);                 // kink angle: the default (180 - angle), off, or any
+    const double kink = draw < 0.3 ? 180. - angle : draw < 0.5 ? 180. : 180. * unit(rng);
 
     Surface_mesh m = original;
     const auto np = CGAL::parameters::number_of_iterations(iterations)
@@ -51,15 +55,17 @@ int main() {
                         .ilsa_feature_angle(angle)
                         .ilsa_fix_unattached_candidates(fix)
                         .ilsa_quality_monotone(monotone)
-                        .ilsa_reject_worsening_moves(reject_worsening);
+                        .ilsa_reject_worsening_moves(reject_worsening)
+                        .ilsa_crease_kink_angle(kink);
     if (default_floor)
       PMP::smooth_surface_mesh_ilsa(m, np);
     else
       PMP::smooth_surface_mesh_ilsa(m, np.ilsa_quality_floor(floor));
     // Ridge vertices are checked by the smoothing test; here: surface, flips, fixed vertices, NaN, minimum q.
     std::map<Surface_mesh::Vertex_index, PMP::ILSA_vertex_type> types;
-    PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
-                                CGAL::parameters::ilsa_feature_angle(angle).ilsa_fix_unattached_candidates(fix));
+    PMP::classify_vertices_ilsa(
+        original, boost::make_assoc_property_map(types),
+        CGAL::parameters::ilsa_feature_angle(angle).ilsa_fix_unattached_candidates(fix).ilsa_crease_kink_angle(kink));
     std::size_t fixed_moved = 0, non_finite = 0, collapsed = 0;
     for (auto v : vertices(m)) {
       const Point& p = m.point(v);
@@ -69,22 +75,23 @@ int main() {
     }
     const auto before = PMP::mesh_quality_ilsa(original), after = PMP::mesh_quality_ilsa(m);
     collapsed = after.number_of_degenerate_faces > before.number_of_degenerate_faces;
-    const auto f = PMP::mesh_fidelity_ilsa(original, m, angle);
+    const auto f = PMP::mesh_fidelity_ilsa(original, m, CGAL::parameters::ilsa_feature_angle(angle));
     // No face ends below the input's minimum or the floor, whichever is lower
     // (up to the rounding of writing back the package's normalised coordinates).
     const double effective_floor = monotone ? 1. : default_floor ? (std::max)(0.5, before.min_aspect_ratio) : floor;
     const bool kept_minimum = after.min_aspect_ratio >= (std::min)(before.min_aspect_ratio, effective_floor) - 1e-12;
     const bool ok = f.number_of_flipped_faces == 0 && f.max_vertex_distance <= 1e-9 && fixed_moved == 0 &&
-                    non_finite == 0 && !collapsed && kept_minimum;
+                    non_finite == 0 && !collapsed && kept_minimum && f.max_crease_deviation <= 3e-4;
     if (!ok) {
       ++failures;
       std::cout << "case " << c << " (" << names[which] << ", iterations " << iterations << ", steps " << steps
                 << ", relax1 " << relax1 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa
                 << ", angle " << angle << ", fix " << fix << ", floor " << (default_floor ? -1. : floor)
-                << ", monotone " << monotone << ", reject worsening " << reject_worsening << "): flipped "
-                << f.number_of_flipped_faces << ", distance " << f.max_vertex_distance << ", fixed moved "
-                << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed << ", min q "
-                << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << std::endl;
+                << ", monotone " << monotone << ", reject worsening " << reject_worsening << ", kink " << kink
+                << "): flipped " << f.number_of_flipped_faces << ", distance " << f.max_vertex_distance
+                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
+                << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
+                << f.max_crease_deviation << std::endl;
       const auto n0 = face_normals_of(original), n1 = face_normals_of(m);
       for (auto fd : faces(m))
         if (n0[std::size_t(fd)] * n1[std::size_t(fd)] < 0) {

@@ -54,6 +54,13 @@ Classification_options read_classification_parameters(
   if (!(options.feature_angle_degrees > 0 && options.feature_angle_degrees <= 180))
     throw ILSA_error("ilsa_feature_angle must be in (0, 180] degrees, got " +
                      std::to_string(options.feature_angle_degrees));
+  // By default a crease vertex is a kink when the crease turns there by more
+  // than the surface turns across a sharp edge (user manual, "Crease kinks").
+  options.kink_angle_degrees =
+      choose_parameter(get_parameter(np, internal_np::ilsa_crease_kink_angle), 180. - options.feature_angle_degrees);
+  if (!(options.kink_angle_degrees >= 0 && options.kink_angle_degrees <= 180))
+    throw ILSA_error("ilsa_crease_kink_angle must be in [0, 180] degrees, got " +
+                     std::to_string(options.kink_angle_degrees));
 
   const auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                     Static_boolean_property_map<vertex_descriptor, false>());
@@ -72,6 +79,7 @@ Classification_options read_classification_parameters(
 }
 
 inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
+  s.number_of_kink_vertices = c.number_of_kinks;
   for (ILSA_vertex_type t : c.type) {
     switch (t) {
     case ILSA_vertex_type::Smooth:
@@ -106,7 +114,9 @@ inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
  * than `1 / cos((180° − θ_f) / 2)`; an edge between two candidates whose
  * dihedral angle is below `θ_f` is sharp; a candidate with two sharp edges is a
  * ridge vertex, with one or more than two a corner, with none a corner or a
- * smooth vertex (`ilsa_fix_unattached_candidates`). Isolated and non-manifold
+ * smooth vertex (`ilsa_fix_unattached_candidates`). A vertex with two sharp
+ * edges where the crease turns by more than `ilsa_crease_kink_angle` is a
+ * corner too (a kink). Isolated and non-manifold
  * vertices are corners.
  *
  * @tparam TriangleMesh a model of `FaceListGraph` and `EdgeListGraph`, with hashable descriptors
@@ -129,7 +139,13 @@ inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
  * angle is sharp} \cgalParamType{`double`, in (0, 180]} \cgalParamDefault{160 (the paper's 8π/9)} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
  *     \cgalParamDescription{whether a ridge candidate with no sharp edge is a corner (the paper's rule) or a smooth
- * vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd \cgalParamNBegin{vertex_is_constrained_map}
+ * vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_crease_kink_angle}
+ *     \cgalParamDescription{a vertex with two sharp edges where the crease turns by more than this angle (degrees) is a
+ * corner, counted in `number_of_kink_vertices`; `180`: the paper's rule}
+ *     \cgalParamType{`double`, in [0, 180]} \cgalParamDefault{`180 − ilsa_feature_angle`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_is_constrained_map}
  *     \cgalParamDescription{a property map telling which vertices are fixed; they are reported as corners (boundary
  * vertices stay boundary)} \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool`
  * as value} \cgalParamDefault{no vertex is constrained} \cgalParamNEnd \cgalParamNBegin{edge_is_constrained_map}

@@ -21,12 +21,18 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/property_map.h>
+
+#include <boost/unordered_map.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -196,34 +202,45 @@ struct ILSA_fidelity_summary {
   double hausdorff_distance = 0; ///< approximate symmetric Hausdorff distance (CGAL's, fixed seed)
   bool closed = false;
   double volume_change = 0;              ///< (V_smoothed - V_original) / V_original, closed meshes only
-  std::size_t number_of_sharp_edges = 0; ///< sharp edges of the original (dihedral angle below the feature angle)
-  double max_feature_vertex_deviation =
-      0; ///< largest distance of an endpoint of a smoothed sharp edge to the original sharp edges
-  double max_feature_deviation = 0; ///< largest distance of any point of a smoothed sharp edge (ends and 3 inner
-                                    ///< points) to the original sharp edges
+  std::size_t number_of_sharp_edges = 0; ///< crease edges: sharp edges of the original (dihedral angle below the
+                                         ///< feature angle), or the constrained edges when a map is given
+  /// Two-sided distance between the original's crease edges and the same edges of the smoothed mesh: every edge of
+  /// either polyline is sampled (ends and seven inner points) and each sample is measured against the whole other
+  /// polyline. A crease cut short (an original point far from the smoothed crease) and a crease bent away from the
+  /// original (a smoothed point far from the original crease) both show.
+  double max_crease_deviation = 0;
+  double mean_crease_deviation = 0; ///< mean over the samples of both directions
 };
 
 /// \ingroup PkgPMPILSARef
 /// Compares `smoothed` with `original`, which must have the same vertices and
 /// faces in the same order (as `smooth_surface_mesh_ilsa()` leaves them).
-/// `feature_angle` is the dihedral angle in degrees below which an edge of
-/// `original` is sharp. The Hausdorff distance samples both meshes with
-/// CGAL's `approximate_symmetric_Hausdorff_distance()` and `random_seed(seed)`.
-template <class TriangleMesh>
+/// Named parameters:
+/// - `ilsa_feature_angle` (default 160): the dihedral angle in degrees below
+///   which an edge of `original` is sharp (the crease deviation compares these);
+/// - `edge_is_constrained_map`: a map from the edges of `original` to `bool`;
+///   when given, its edges are the crease edges instead of the sharp ones;
+/// - `random_seed` (default 0): the seed of the Hausdorff distance, which
+///   samples both meshes with CGAL's `approximate_symmetric_Hausdorff_distance()`.
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const TriangleMesh& smoothed,
-                                         double feature_angle = 160., unsigned int seed = 0) {
+                                         const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const double feature_angle = choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), 160.);
+  const unsigned int seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using P = K::Point_3;
   using Mesh = CGAL::Surface_mesh<P>;
   ILSA_fidelity_summary r;
 
-  // Plain double copies, vertex and face order kept.
-  auto copy = [](const TriangleMesh& in) {
-    Mesh out;
-    CGAL::copy_face_graph(in, out);
-    return out;
-  };
-  const Mesh a = copy(original), b = copy(smoothed);
+  // Plain double copies; both are made the same way, so their vertices and
+  // faces correspond. `copied` maps the vertices of `original` to `a`'s.
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  std::vector<std::pair<vertex_descriptor, typename Mesh::Vertex_index>> copied;
+  Mesh a, b;
+  CGAL::copy_face_graph(original, a, parameters::vertex_to_vertex_output_iterator(std::back_inserter(copied)));
+  CGAL::copy_face_graph(smoothed, b);
   if (num_vertices(a) != num_vertices(b) || num_faces(a) != num_faces(b) || num_faces(a) == 0) return r;
   r.number_of_faces = num_faces(a);
 
@@ -269,33 +286,64 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
     r.volume_change = va != 0 ? (vb - va) / std::abs(va) : 0.;
   }
 
-  // Sharp edges of the original; the same edges of the smoothed mesh are
-  // sampled (ends and three inner points) against them.
+  // Sharp edges of the original, and the same edges of the smoothed mesh
+  // (not the smoothed mesh's own sharp edges: an edge near the threshold could
+  // change side), compared both ways.
   const double pi = 3.14159265358979323846;
   const double sharp_cosine = std::cos(pi - feature_angle * pi / 180.);
-  std::vector<K::Segment_3> sharp;
-  std::vector<std::array<P, 2>> smoothed_sharp;
+  using Segments = std::vector<K::Segment_3>;
+  Segments original_crease, smoothed_crease;
+  // The user's crease edges, as pairs of vertices of `a`.
+  constexpr bool user_creases =
+      !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
+  std::set<std::pair<std::size_t, std::size_t>> constrained;
+  if (user_creases) {
+    using GT = boost::graph_traits<TriangleMesh>;
+    const auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
+                                      Static_boolean_property_map<typename GT::edge_descriptor, false>());
+    boost::unordered_map<vertex_descriptor, std::size_t> position;
+    for (const auto& c : copied) position.emplace(c.first, std::size_t(c.second));
+    for (auto e : edges(original))
+      if (get(ecm, e)) {
+        const std::size_t i = position.at(source(e, original)), j = position.at(target(e, original));
+        constrained.emplace((std::min)(i, j), (std::max)(i, j));
+      }
+  }
   for (auto e : edges(a)) {
     const auto h = halfedge(e, a);
-    if (is_border_edge(h, a)) continue;
-    auto n0 = normal(a, face(h, a)), n1 = normal(a, face(opposite(h, a), a));
-    const double l = std::sqrt(n0.squared_length() * n1.squared_length());
-    if (l == 0 || n0 * n1 / l >= sharp_cosine) continue;
-    sharp.emplace_back(a.point(source(h, a)), a.point(target(h, a)));
-    smoothed_sharp.push_back({pb[std::size_t(source(h, a))], pb[std::size_t(target(h, a))]});
+    if (user_creases) {
+      const std::size_t i = std::size_t(source(h, a)), j = std::size_t(target(h, a));
+      if (!constrained.count({(std::min)(i, j), (std::max)(i, j)})) continue;
+    } else {
+      if (is_border_edge(h, a)) continue;
+      auto n0 = normal(a, face(h, a)), n1 = normal(a, face(opposite(h, a), a));
+      const double l = std::sqrt(n0.squared_length() * n1.squared_length());
+      if (l == 0 || n0 * n1 / l >= sharp_cosine) continue;
+    }
+    original_crease.emplace_back(a.point(source(h, a)), a.point(target(h, a)));
+    smoothed_crease.emplace_back(pb[std::size_t(source(h, a))], pb[std::size_t(target(h, a))]);
   }
-  r.number_of_sharp_edges = sharp.size();
-  if (!sharp.empty()) {
-    using Segment_tree = CGAL::AABB_tree<
-        CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, typename std::vector<K::Segment_3>::const_iterator>>>;
-    Segment_tree lines(sharp.cbegin(), sharp.cend());
-    for (const auto& s : smoothed_sharp)
-      for (int k = 0; k <= 4; ++k) {
-        const P p = s[0] + (k / 4.) * (s[1] - s[0]);
-        const double d = std::sqrt(lines.squared_distance(p)) * scale;
-        r.max_feature_deviation = (std::max)(r.max_feature_deviation, d);
-        if (k == 0 || k == 4) r.max_feature_vertex_deviation = (std::max)(r.max_feature_vertex_deviation, d);
-      }
+  r.number_of_sharp_edges = original_crease.size();
+  if (!original_crease.empty()) {
+    using Segment_tree =
+        CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, typename Segments::const_iterator>>>;
+    const Segment_tree original_lines(original_crease.cbegin(), original_crease.cend());
+    const Segment_tree smoothed_lines(smoothed_crease.cbegin(), smoothed_crease.cend());
+    constexpr int intervals = 8;
+    std::size_t samples = 0;
+    auto measure = [&](const Segments& from, const Segment_tree& to) {
+      for (const auto& s : from)
+        for (int k = 0; k <= intervals; ++k) {
+          const double d =
+              std::sqrt(to.squared_distance(s.source() + (double(k) / intervals) * (s.target() - s.source()))) * scale;
+          r.max_crease_deviation = (std::max)(r.max_crease_deviation, d);
+          r.mean_crease_deviation += d;
+          ++samples;
+        }
+    };
+    measure(original_crease, smoothed_lines);
+    measure(smoothed_crease, original_lines);
+    r.mean_crease_deviation /= double(samples);
   }
   return r;
 }

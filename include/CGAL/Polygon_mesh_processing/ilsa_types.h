@@ -53,6 +53,7 @@ struct ILSA_statistics {
   std::size_t number_of_ridge_vertices = 0;
   std::size_t number_of_corner_vertices = 0;
   std::size_t number_of_boundary_vertices = 0;
+  std::size_t number_of_kink_vertices = 0;       ///< corners among them that are crease kinks (two sharp edges)
   std::size_t number_of_iterations = 0;          ///< global iterations run
   std::size_t number_of_moves = 0;               ///< accepted vertex moves, summed over the iterations
   std::size_t number_of_shortened_moves = 0;     ///< moves accepted only after being shortened by the safety check

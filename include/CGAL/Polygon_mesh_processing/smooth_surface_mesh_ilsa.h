@@ -121,6 +121,15 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
  *     \cgalParamDescription{whether a ridge candidate with no sharp edge is fixed as a corner (the paper's rule) or
  * smoothed as a smooth vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_crease_kink_angle}
+ *     \cgalParamDescription{a vertex with two sharp (or constrained) edges is fixed like a corner when the crease
+ * turns there by more than this angle, in degrees (the angle between the directions of its two edges; a straight
+ * crease turns by 0): sliding it would cut off the tip of the crease. Not in the paper: `180` restores the paper's
+ * rule, under which such a vertex is a ridge vertex}
+ *     \cgalParamType{`double`, in [0, 180]}
+ *     \cgalParamDefault{`180 − ilsa_feature_angle` (20: a crease vertex is a kink when the crease turns by more than
+ * the surface turns across a sharp edge)}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_is_constrained_map}
  *     \cgalParamDescription{a property map telling which vertices are fixed}
  *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool` as value}
@@ -160,10 +169,11 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it takes the smoothed
  * surface farther than this distance from the input surface where it was not already: from the input position of the
  * vertex or of a neighbour to the smoothed faces around it (a bump or a crease bend cut off), or from the centroid and
- * edge midpoints of the faces around the vertex to the input faces around them (a chord over a fold). Relative to the
- * bounding-box diagonal. `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no
- * such bound)}
- *     \cgalParamType{`double`, positive}
+ * edge midpoints of the faces around the vertex to the input faces around them (a chord over a fold). The same bound
+ * holds along the feature lines, both ways: the input's sharp edges (or constrained edges) and the edges whose dihedral
+ * angle is below `ilsa_feature_angle` may not move farther than it from their input position, nor their input points
+ * end farther than it from them. Relative to the bounding-box diagonal. `std::numeric_limits<double>::infinity()`
+ * disables this part of the check (the paper has no such bound)} \cgalParamType{`double`, positive}
  *     \cgalParamDefault{`3e-4`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
@@ -271,7 +281,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     quality_floor = (std::max)(quality_floor, input_minimum);
   }
   const ilsa::Projector projector(original, classification);
-  ilsa::Move_safety safety(original, quality_monotone ? 1. : quality_floor, fidelity_tolerance, reject_worsening, 3);
+  ilsa::Move_safety safety(original, classification, quality_monotone ? 1. : quality_floor, fidelity_tolerance,
+                           reject_worsening, 3);
   auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
     if (!do_project) return ilsa::Projector::Result{q, home, false};
     return projector.project(v, q, current, home);

@@ -6,7 +6,7 @@
 // the worst triangle around a moved vertex may not get worse if it ends below
 // the quality floor, and the smoothed surface may not move away from an input
 // vertex by more than the fidelity tolerance (it may not cut off a bump or a
-// crease bend of the input).
+// crease bend of the input), nor a crease polyline from the input crease.
 // A vertex of an offending triangle has its move halved (and re-projected) a
 // few times, then dropped for this iteration. Since the moves are applied all
 // at once (Jacobi), the check is repeated until no triangle offends; it ends
@@ -19,6 +19,7 @@
 #include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
 #include <algorithm>
 #include <array>
@@ -44,9 +45,9 @@ public:
   /// that a move may create or increase; infinity disables the check.
   /// `reject_worsening`: drop a move that lowers the mean aspect ratio of the
   /// vertex's star, the neighbours being at their new positions.
-  Move_safety(const Flat_mesh& original, double quality_floor, double fidelity_tolerance, bool reject_worsening,
-              std::size_t halvings)
-      : m_(original), quality_floor_(quality_floor), fidelity_tolerance_(fidelity_tolerance),
+  Move_safety(const Flat_mesh& original, const Vertex_classification& classification, double quality_floor,
+              double fidelity_tolerance, bool reject_worsening, std::size_t halvings)
+      : m_(original), c_(classification), quality_floor_(quality_floor), fidelity_tolerance_(fidelity_tolerance),
         reject_worsening_(reject_worsening), halvings_(halvings) {
     // Reference orientation of each face: its input normal, or for a face that
     // is degenerate in the input the sum of its neighbours' normals. A face
@@ -106,6 +107,8 @@ public:
           tries_[v] = halvings_;
         }
         if (!bad && std::isfinite(fidelity_tolerance_)) bad = deviates(previous, next, v);
+        if (!bad && std::isfinite(fidelity_tolerance_))
+          bad = crease_deviates(previous, previous_home, next, next_home, v);
         if (bad) offenders.push_back(v);
       }
       for (std::size_t v : offenders) {
@@ -193,6 +196,76 @@ private:
     return false;
   }
 
+  // The crease bound (user manual, "Crease fidelity"): the same test along
+  // the feature lines of the input (its sharp edges, and the edges whose
+  // dihedral angle is below the feature angle), both ways. For each feature
+  // edge of `v`, the input positions of its two ends may not end farther than
+  // the tolerance from the smoothed line around them (a bend cut off), and its
+  // inner points may not end farther from the input line (a chord across a
+  // bend), unless they already were.
+  bool crease_deviates(const std::vector<Vec3>& previous, const std::vector<std::size_t>& previous_home,
+                       const std::vector<Vec3>& next, const std::vector<std::size_t>& next_home, std::size_t v) const {
+    const std::size_t* u = m_.vertex_neighbors.first(v);
+    for (const std::size_t* e = m_.vertex_edges.first(v); e != m_.vertex_edges.last(v); ++e, ++u) {
+      if (!c_.feature_edge[*e]) continue;
+      const std::size_t line = line_of(*e);
+      for (std::size_t w : {v, *u}) {
+        if (c_.is_fixed(w)) continue; // keeps its input position, on the line
+        const double now = line_vertex_deviation(next, w, line);
+        if (now > fidelity_tolerance_ && now > line_vertex_deviation(previous, w, line)) return true;
+      }
+      for (double t : {0., 0.25, 0.5, 0.75}) { // t = 1 is `u`, checked with its own move
+        const double now = line_edge_deviation(next, next_home, v, *u, t, line);
+        if (now > fidelity_tolerance_ && now > line_edge_deviation(previous, previous_home, v, *u, t, line))
+          return true;
+      }
+    }
+    return false;
+  }
+
+  // A crease edge belongs to its crease polyline; another feature edge is a line of its own.
+  std::size_t line_of(std::size_t e) const { return c_.crease_of_edge[e] != npos ? c_.crease_of_edge[e] : e; }
+
+  // Distance from the input position of `w` to the line `line` at `pos`
+  // around it: the line's edges at `w` and at their other ends.
+  double line_vertex_deviation(const std::vector<Vec3>& pos, std::size_t w, std::size_t line) const {
+    const Vec3& x = m_.points[w];
+    double best = std::numeric_limits<double>::infinity();
+    auto measure = [&](std::size_t e) {
+      best = (std::min)(best, squared_distance_to_segment(x, pos[m_.edges[e][0]], pos[m_.edges[e][1]]));
+    };
+    for_each_line_edge(w, line, [&](std::size_t e) {
+      for (std::size_t end : m_.edges[e]) for_each_line_edge(end, line, measure);
+    });
+    return std::sqrt(best);
+  }
+
+  // Distance from the point at `t` along the segment from `v` to `u` at `pos`
+  // to the input line `line` where these vertices lie: around the crease edge
+  // a ridge vertex lies on (`home`), around the input position of another.
+  double line_edge_deviation(const std::vector<Vec3>& pos, const std::vector<std::size_t>& home, std::size_t v,
+                             std::size_t u, double t, std::size_t line) const {
+    const Vec3 x = pos[v] + t * (pos[u] - pos[v]);
+    double best = std::numeric_limits<double>::infinity();
+    auto measure = [&](std::size_t e) {
+      best = (std::min)(best, squared_distance_to_segment(x, m_.points[m_.edges[e][0]], m_.points[m_.edges[e][1]]));
+    };
+    for (std::size_t w : {v, u}) {
+      if (c_.type[w] != ILSA_vertex_type::Ridge) {
+        for_each_line_edge(w, line, measure);
+        continue;
+      }
+      for (std::size_t end : m_.edges[home[w]]) for_each_line_edge(end, line, measure);
+    }
+    return std::sqrt(best);
+  }
+
+  // The edges of the feature line `line` at vertex `w`.
+  template <class F> void for_each_line_edge(std::size_t w, std::size_t line, F f) const {
+    for (const std::size_t* e = m_.vertex_edges.first(w); e != m_.vertex_edges.last(w); ++e)
+      if (c_.feature_edge[*e] && line_of(*e) == line) f(*e);
+  }
+
   // Largest distance from the centroid and the edge midpoints of face `f` at
   // `pos` to the input surface around the face's vertices.
   double face_deviation(const std::vector<Vec3>& pos, std::size_t f) const {
@@ -259,6 +332,7 @@ private:
   }
 
   const Flat_mesh& m_;
+  const Vertex_classification& c_;
   double quality_floor_;
   double fidelity_tolerance_;
   bool reject_worsening_;

@@ -47,11 +47,13 @@ inline void compute_face_normals(const Flat_mesh& m, const std::vector<Vec3>& po
 /// What the classification stage hands to the smoothing stages.
 struct Vertex_classification {
   std::vector<ILSA_vertex_type> type;
-  std::vector<unsigned char> ridge_candidate;             // |x| above the feature threshold
-  std::vector<unsigned char> sharp_edge;                  // per edge (spec §1.3 or the user's edge map)
-  std::vector<std::size_t> crease_of_edge;                // crease polyline of a sharp edge, npos otherwise
+  std::vector<unsigned char> ridge_candidate; // |x| above the feature threshold
+  std::vector<unsigned char> sharp_edge;      // per edge (spec §1.3 or the user's edge map)
+  std::vector<std::size_t> crease_of_edge;    // crease polyline of a sharp edge, npos otherwise
+  std::vector<unsigned char> feature_edge;    // sharp, or (without the user's edge map) dihedral angle below θ_f
   std::vector<std::array<std::size_t, 2>> attached_sharp; // a ridge vertex's two attached-sharp nodes
   std::vector<std::array<std::size_t, 2>> attached_edges; // and the two sharp edges leading to them
+  std::size_t number_of_kinks = 0;                        // vertices with two sharp edges fixed as kinks
 
   bool is_fixed(std::size_t v) const {
     return type[v] == ILSA_vertex_type::Corner || type[v] == ILSA_vertex_type::Boundary;
@@ -61,6 +63,7 @@ struct Vertex_classification {
 struct Classification_options {
   double feature_angle_degrees = 160.;   // dihedral angle θ_f below which an edge is sharp
   bool fix_unattached_candidates = true; // spec §1.4: candidate without sharp edge is a corner (paper) or smooth
+  double kink_angle_degrees = 180.;      // a crease turning by more than this at a vertex makes it a corner
   const std::vector<unsigned char>* constrained_vertices = nullptr; // user's vertex_is_constrained_map
   const std::vector<unsigned char>* constrained_edges = nullptr;    // user's edge_is_constrained_map
 };
@@ -74,12 +77,23 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
   const double deviation = pi - opt.feature_angle_degrees * pi / 180.;
   const double candidate_length = 1. / std::cos(deviation / 2.);
   const double sharp_cosine = std::cos(deviation);
+  // Kink (user manual, "Crease kinks"): the crease's direction turns at `v`
+  // by more than the kink angle, i.e. its two sharp edges meet at less than
+  // 180° minus it. A vertex there is the tip of the crease: sliding would cut
+  // it off. A zero-length sharp edge has no direction and counts as a kink.
+  const double kink_cosine = -std::cos(opt.kink_angle_degrees * pi / 180.);
+  auto is_kink = [&](const Vec3& v, const Vec3& a, const Vec3& b) {
+    if (!(opt.kink_angle_degrees < 180.)) return false;
+    const double la = (a - v).norm(), lb = (b - v).norm();
+    return la == 0 || lb == 0 || (a - v).dot(b - v) > kink_cosine * la * lb;
+  };
 
   Vertex_classification c;
   c.type.assign(nv, ILSA_vertex_type::Smooth);
   c.ridge_candidate.assign(nv, 0);
   c.sharp_edge.assign(ne, 0);
   c.crease_of_edge.assign(ne, npos);
+  c.feature_edge.assign(ne, 0);
   c.attached_sharp.assign(nv, {npos, npos});
   c.attached_edges.assign(nv, {npos, npos});
 
@@ -102,10 +116,14 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
     }
     const auto& ends = m.edges[e];
     const auto& fs = m.edge_faces[e];
-    if (!c.ridge_candidate[ends[0]] || !c.ridge_candidate[ends[1]] || fs[0] == npos || fs[1] == npos) continue;
-    // Dihedral angle below θ_f <=> face normals more than π − θ_f apart.
-    c.sharp_edge[e] = face_normals[fs[0]].dot(face_normals[fs[1]]) < sharp_cosine;
+    if (fs[0] == npos || fs[1] == npos) continue;
+    // Dihedral angle below θ_f <=> face normals more than π − θ_f apart. Such
+    // an edge is sharp (a crease edge) only between two ridge candidates
+    // (spec §1.3); the others are still feature edges the safety check keeps.
+    c.feature_edge[e] = face_normals[fs[0]].dot(face_normals[fs[1]]) < sharp_cosine;
+    c.sharp_edge[e] = c.feature_edge[e] && c.ridge_candidate[ends[0]] && c.ridge_candidate[ends[1]];
   }
+  for (std::size_t e = 0; e < ne; ++e) c.feature_edge[e] = c.feature_edge[e] || c.sharp_edge[e];
 
   // Attached-sharp nodes decide between ridge and corner (spec §1.4, §1.5).
   for (std::size_t v = 0; v < nv; ++v) {
@@ -122,7 +140,10 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
     }
     const bool candidate = opt.constrained_edges ? count > 0 : bool(c.ridge_candidate[v]);
     if (!candidate) continue;
-    if (count == 2)
+    if (count == 2 && is_kink(m.points[v], m.points[c.attached_sharp[v][0]], m.points[c.attached_sharp[v][1]])) {
+      c.type[v] = ILSA_vertex_type::Corner;
+      ++c.number_of_kinks;
+    } else if (count == 2)
       c.type[v] = ILSA_vertex_type::Ridge;
     else if (count != 0 || opt.fix_unattached_candidates)
       c.type[v] = ILSA_vertex_type::Corner;
