@@ -242,7 +242,8 @@ private:
 
   // Distance from the point at `t` along the segment from `v` to `u` at `pos`
   // to the input line `line` where these vertices lie: around the crease edge
-  // a ridge vertex lies on (`home`), around the input position of another.
+  // a moving ridge vertex lies on (`home`), around the input position of
+  // another (a ridge vertex outside the vertex range has no home: it does not move).
   double line_edge_deviation(const std::vector<Vec3>& pos, const std::vector<std::size_t>& home, std::size_t v,
                              std::size_t u, double t, std::size_t line) const {
     const Vec3 x = pos[v] + t * (pos[u] - pos[v]);
@@ -251,7 +252,7 @@ private:
       best = (std::min)(best, squared_distance_to_segment(x, m_.points[m_.edges[e][0]], m_.points[m_.edges[e][1]]));
     };
     for (std::size_t w : {v, u}) {
-      if (c_.type[w] != ILSA_vertex_type::Ridge) {
+      if (c_.type[w] != ILSA_vertex_type::Ridge || home[w] == npos) {
         for_each_line_edge(w, line, measure);
         continue;
       }
