@@ -2,6 +2,7 @@
 // smoothers on identical input, in the same process.
 //
 //   ilsa_benchmark [--runs N] [--peer-iterations N] [MESH ...]
+//   ilsa_benchmark --scaling N
 //
 // Without meshes: every bundled mesh, plus ../shared/data when it exists.
 // Prints one Markdown table row per (mesh, method): quality (aspect ratio q
@@ -10,7 +11,15 @@
 // the input's sharp edges and the same edges of the result, max and mean;
 // distances relative to the bounding-box diagonal),
 // the median wall time of N runs, and ILSA's time over the peer's.
+// --scaling N prints instead the scaling table: the horse Loop-subdivided 0
+// to N times and perturbed, time per face and peak memory of ILSA and CGAL
+// tangential relaxation, each run once in a child process of its own.
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/centroid.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/angle_and_area_smoothing.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
@@ -23,7 +32,10 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <map>
+#include <random>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -41,8 +53,7 @@ const double feature_angle = 160.;
 
 struct Method {
   std::string name;
-  std::function<void(Mesh&)> run;
-  unsigned iterations;
+  std::function<std::size_t(Mesh&)> run; // returns the number of iterations run
 };
 
 double median(std::vector<double> v) {
@@ -72,20 +83,138 @@ std::vector<std::string> default_meshes() {
   return files;
 }
 
+// Peak resident memory of this process so far, in MB (Linux: VmHWM).
+double peak_memory_mb() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.;
+  return 0;
+}
+
+// One measurement of the scaling table, in a process of its own so that its
+// peak memory is its own: "load" reads the mesh and builds one AABB tree over
+// its faces; the others read it and smooth it. Prints seconds, peak MB and
+// iterations run.
+int run_child(const std::string& mode, const std::string& file) {
+  Mesh m;
+  if (!CGAL::IO::read_polygon_mesh(file, m)) return 1;
+  const auto start = std::chrono::steady_clock::now();
+  std::size_t iterations = 0;
+  if (mode == "load") {
+    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+    Tree tree(faces(m).first, faces(m).second, m);
+    tree.build();
+    iterations = tree.size() > 0;
+  } else if (mode == "ilsa")
+    iterations = PMP::smooth_surface_mesh_ilsa(m).number_of_iterations;
+#ifdef CGAL_LINKED_WITH_TBB
+  else if (mode == "ilsa-parallel")
+    iterations = PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_tag>(m).number_of_iterations;
+#endif
+  else if (mode == "tangential")
+    PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(10)), iterations = 10;
+  else
+    return 1;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%.6f %.1f %zu\n", seconds, peak_memory_mb(), iterations);
+  return 0;
+}
+
+// The bundled horse Loop-subdivided `levels` times, its vertices then moved a
+// random fraction (below 0.3) of the way to the centroid of a random incident
+// face, so that there is work to do.
+Mesh subdivided_horse(unsigned levels) {
+  Mesh m;
+  CGAL::IO::read_polygon_mesh(std::string(ILSA_DATA_DIR) + "/horse.ply", m);
+  if (levels > 0) CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(levels));
+  std::mt19937 rng(levels);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  std::vector<K::Point_3> moved(m.points().begin(), m.points().end());
+  for (auto v : vertices(m)) {
+    if (is_border(v, m)) continue;
+    std::vector<Mesh::Face_index> around;
+    for (auto f : faces_around_target(halfedge(v, m), m)) around.push_back(f);
+    const auto f = around[std::size_t(unit(rng) * double(around.size())) % around.size()];
+    std::vector<K::Point_3> corners;
+    for (auto w : vertices_around_face(halfedge(f, m), m)) corners.push_back(m.point(w));
+    const K::Point_3 c = CGAL::centroid(corners[0], corners[1], corners[2]);
+    moved[std::size_t(v)] = m.point(v) + 0.3 * unit(rng) * (c - m.point(v));
+  }
+  for (auto v : vertices(m)) m.point(v) = moved[std::size_t(v)];
+  return m;
+}
+
+// Scaling table: time per face and peak memory of ILSA (sequential and
+// parallel) and CGAL tangential relaxation (10 iterations) on the horse and
+// its subdivisions, each measurement in a child process.
+void run_scaling(const std::string& self, unsigned max_level) {
+  std::cout << "\n| mesh | faces | method | time s | iterations run | time per face µs | time per face / horse's | "
+               "peak memory MB | peak / (load + AABB tree) |\n|---|---|---|---|---|---|---|---|---|\n";
+  std::map<std::string, double> horse_per_face;
+  for (unsigned level = 0; level <= max_level; ++level) {
+    const Mesh m = subdivided_horse(level);
+    const std::string file =
+        (std::filesystem::temp_directory_path() / ("ilsa_scaling_" + std::to_string(level) + ".ply")).string();
+    CGAL::IO::write_polygon_mesh(file, m, CGAL::parameters::use_binary_mode(true));
+    const std::string name = level == 0 ? "horse, perturbed" : "horse, Loop " + std::to_string(level) + "x, perturbed";
+    std::vector<std::string> modes{"load", "ilsa"};
+#ifdef CGAL_LINKED_WITH_TBB
+    modes.push_back("ilsa-parallel");
+#endif
+    modes.push_back("tangential");
+    double load_peak = 0;
+    for (const std::string& mode : modes) {
+      FILE* child = popen(("\"" + self + "\" --child " + mode + " \"" + file + "\"").c_str(), "r");
+      double seconds = 0, peak = 0;
+      std::size_t iterations = 0;
+      const bool ok = child && std::fscanf(child, "%lf %lf %zu", &seconds, &peak, &iterations) == 3;
+      if (child) pclose(child);
+      if (!ok) {
+        std::cerr << "scaling: " << mode << " on " << file << " failed\n";
+        continue;
+      }
+      if (mode == "load") {
+        load_peak = peak;
+        std::printf("| %s | %zu | load + AABB tree | %.3f | | | | %.0f | 1 |\n", name.c_str(),
+                    std::size_t(num_faces(m)), seconds, peak);
+        continue;
+      }
+      const double per_face = 1e6 * seconds / double(num_faces(m));
+      if (level == 0) horse_per_face[mode] = per_face;
+      const std::string label = mode == "ilsa"            ? "ILSA (defaults)"
+                                : mode == "ilsa-parallel" ? "ILSA (defaults), Parallel_tag"
+                                                          : "CGAL tangential relaxation";
+      std::printf("| %s | %zu | %s | %.3f | %zu | %.2f | %.2f | %.0f | %.2f |\n", name.c_str(),
+                  std::size_t(num_faces(m)), label.c_str(), seconds, iterations, per_face,
+                  per_face / horse_per_face[mode], peak, peak / load_peak);
+      std::fflush(stdout);
+    }
+    std::remove(file.c_str());
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 4 && std::string(argv[1]) == "--child") return run_child(argv[2], argv[3]);
   int runs = 5;
   unsigned peer_iterations = 10;
+  int scaling = -1; // --scaling N: the scaling table up to N subdivisions, and nothing else
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--runs" && i + 1 < argc)
       runs = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--scaling" && i + 1 < argc)
+      scaling = std::max(0, std::atoi(argv[++i]));
     else if (a == "--peer-iterations" && i + 1 < argc)
       peer_iterations = unsigned(std::max(1, std::atoi(argv[++i])));
     else
       files.push_back(a);
+  }
+  if (scaling >= 0) {
+    run_scaling(argv[0], unsigned(scaling));
+    return 0;
   }
   if (files.empty()) files = default_meshes();
 
@@ -99,8 +228,8 @@ int main(int argc, char** argv) {
             << " degrees; Ceres (area smoothing): " << (ceres ? "yes" : "no") << "\n\n";
   std::cout << "| mesh | method | q min | q mean | q<0.3 % | min angle | flipped | max dist | Hausdorff | "
                "crease dev. max | crease dev. mean | time s (median) | ILSA time / this | "
-               "time per iteration s |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+               "time per iteration s | iterations run |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
   for (const std::string& file : files) {
     Mesh input;
@@ -126,50 +255,54 @@ int main(int argc, char** argv) {
     };
 
     std::vector<Method> methods;
-    methods.push_back({"ILSA (defaults)", [](Mesh& m) { PMP::smooth_surface_mesh_ilsa(m); }, 20});
-    methods.push_back({"CGAL angle smoothing + sharp edges",
-                       [&](Mesh& m) {
+    methods.push_back(
+        {"ILSA (defaults)", [](Mesh& m) { return PMP::smooth_surface_mesh_ilsa(m).number_of_iterations; }});
+#ifdef CGAL_LINKED_WITH_TBB
+    methods.push_back({"ILSA (defaults), Parallel_tag", [](Mesh& m) {
+                         return PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_tag>(m).number_of_iterations;
+                       }});
+#endif
+    methods.push_back({"CGAL angle smoothing + sharp edges", [&](Mesh& m) {
                          auto ecm = with_constraints(m);
                          PMP::angle_and_area_smoothing(m, CGAL::parameters::number_of_iterations(peer_iterations)
                                                               .use_area_smoothing(false)
                                                               .use_Delaunay_flips(false)
                                                               .edge_is_constrained_map(ecm));
-                       },
-                       peer_iterations});
+                         return std::size_t(peer_iterations);
+                       }});
     if (ceres)
-      methods.push_back({"CGAL angle+area smoothing + sharp edges",
-                         [&](Mesh& m) {
+      methods.push_back({"CGAL angle+area smoothing + sharp edges", [&](Mesh& m) {
                            auto ecm = with_constraints(m);
                            PMP::angle_and_area_smoothing(m, CGAL::parameters::number_of_iterations(peer_iterations)
                                                                 .use_Delaunay_flips(false)
                                                                 .edge_is_constrained_map(ecm));
-                         },
-                         peer_iterations});
-    methods.push_back(
-        {"CGAL tangential relaxation",
-         [&](Mesh& m) { PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(peer_iterations)); },
-         peer_iterations});
-    methods.push_back({"CGAL tangential relaxation + sharp edges",
-                       [&](Mesh& m) {
+                           return std::size_t(peer_iterations);
+                         }});
+    methods.push_back({"CGAL tangential relaxation", [&](Mesh& m) {
+                         PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(peer_iterations));
+                         return std::size_t(peer_iterations);
+                       }});
+    methods.push_back({"CGAL tangential relaxation + sharp edges", [&](Mesh& m) {
                          auto ecm = with_constraints(m);
                          PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(peer_iterations)
                                                            .edge_is_constrained_map(ecm)
                                                            .relax_constraints(true));
-                       },
-                       peer_iterations});
+                         return std::size_t(peer_iterations);
+                       }});
 
     const auto q0 = PMP::mesh_quality_ilsa(input);
-    std::printf("| %s | input | %.4f | %.4f | %.2f | %.2f | | | | | | | | |\n", name.c_str(), q0.min_aspect_ratio,
+    std::printf("| %s | input | %.4f | %.4f | %.2f | %.2f | | | | | | | | | |\n", name.c_str(), q0.min_aspect_ratio,
                 q0.mean_aspect_ratio, 100. * q0.share_below_threshold, q0.min_angle);
 
     std::vector<double> times(methods.size());
+    std::vector<std::size_t> iterations(methods.size());
     std::vector<Mesh> results(methods.size());
     for (std::size_t k = 0; k < methods.size(); ++k) {
       std::vector<double> t;
       for (int r = 0; r < runs; ++r) {
         Mesh m = input;
         const auto start = std::chrono::steady_clock::now();
-        methods[k].run(m);
+        iterations[k] = methods[k].run(m);
         t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         if (r == 0) results[k] = m;
       }
@@ -179,12 +312,13 @@ int main(int argc, char** argv) {
       Mesh& m = results[k];
       const auto q = PMP::mesh_quality_ilsa(m);
       const auto f = PMP::mesh_fidelity_ilsa(input, m, CGAL::parameters::ilsa_feature_angle(feature_angle));
-      std::printf("| %s | %s | %.4f | %.4f | %.2f | %.2f | %zu | %.1e | %.2e | %.1e | %.1e | %.3f | %s | %.4f |\n",
-                  name.c_str(), methods[k].name.c_str(), q.min_aspect_ratio, q.mean_aspect_ratio,
-                  100. * q.share_below_threshold, q.min_angle, f.number_of_flipped_faces, f.max_vertex_distance,
-                  f.hausdorff_distance, f.max_crease_deviation, f.mean_crease_deviation, times[k],
-                  k == 0 ? "1" : std::to_string(times[0] / times[k]).substr(0, 5).c_str(),
-                  times[k] / methods[k].iterations);
+      std::printf(
+          "| %s | %s | %.4f | %.4f | %.2f | %.2f | %zu | %.1e | %.2e | %.1e | %.1e | %.3f | %s | %.4f | %zu |\n",
+          name.c_str(), methods[k].name.c_str(), q.min_aspect_ratio, q.mean_aspect_ratio,
+          100. * q.share_below_threshold, q.min_angle, f.number_of_flipped_faces, f.max_vertex_distance,
+          f.hausdorff_distance, f.max_crease_deviation, f.mean_crease_deviation, times[k],
+          k == 0 ? "1" : std::to_string(times[0] / times[k]).substr(0, 5).c_str(), times[k] / double(iterations[k]),
+          iterations[k]);
     }
     std::fflush(stdout);
   }

@@ -27,9 +27,19 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 namespace PMP = CGAL::Polygon_mesh_processing;
+#ifdef CGAL_LINKED_WITH_TBB
+constexpr bool tbb_available = true;
+#else
+constexpr bool tbb_available = false; // --threads then has no effect
+#endif
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 
@@ -40,15 +50,19 @@ struct Options {
   std::string output;
   unsigned int iterations = 20, relaxation_steps = 3;
   double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., fidelity_tolerance = 3e-4;
+  double minimum_gain = 1e-4;
   std::optional<double> kink_angle;    // the library's default (180 - feature angle) when not given
   std::optional<double> quality_floor; // the library's default when not given
   bool fix_unattached = true, project = true, safety = true, monotone = false, reject_worsening = true, verbose = false;
-  unsigned int worst = 0; // faces listed by --worst
+  unsigned int worst = 0;                                                   // faces listed by --worst
+  unsigned int threads = std::max(1u, std::thread::hardware_concurrency()); // 1: sequential
 };
 
 const char* usage =
     "usage: ilsa_smooth [INPUT [OUTPUT]] [options]\n"
-    "  --iterations N          global iterations (default 20)\n"
+    "  --iterations N          largest number of global iterations (default 20)\n"
+    "  --min-gain X            stop once an iteration raises the mean q by less, >= 0,\n"
+    "                          0 runs every iteration (default 1e-4)\n"
     "  --relaxation-steps N    sweeps per iteration (default 3)\n"
     "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
     "  --relax2 X              penalty relaxation, (0,1] (default 0.5)\n"
@@ -67,6 +81,7 @@ const char* usage =
     "  --reject-worsening 0|1  safety check: drop moves that lower the star's mean quality (default 1)\n"
     "  --fidelity-tolerance X  safety check: largest distance of the surface from an input vertex,\n"
     "                          relative to the bounding-box diagonal, > 0, inf disables (default 3e-4)\n"
+    "  --threads N             threads (default: all cores; 1: sequential; the result is the same)\n"
     "  --verbose               print what each iteration does\n"
     "  --worst N               list the N worst faces after smoothing: aspect ratio before and after,\n"
     "                          type of each vertex and whether it moved, smallest dihedral angle of\n"
@@ -103,6 +118,7 @@ Options parse(int argc, char** argv) {
       {"--wl", [&](const std::string& s) { o.wl = parse_number("--wl", s); }},
       {"--wa", [&](const std::string& s) { o.wa = parse_number("--wa", s); }},
       {"--feature-angle", [&](const std::string& s) { o.feature_angle = parse_number("--feature-angle", s); }},
+      {"--min-gain", [&](const std::string& s) { o.minimum_gain = parse_number("--min-gain", s); }},
       {"--kink-angle", [&](const std::string& s) { o.kink_angle = parse_number("--kink-angle", s); }},
       {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
       {"--fidelity-tolerance",
@@ -111,6 +127,11 @@ Options parse(int argc, char** argv) {
       {"--reject-worsening",
        [&](const std::string& s) { o.reject_worsening = parse_count("--reject-worsening", s) != 0; }},
       {"--worst", [&](const std::string& s) { o.worst = parse_count("--worst", s); }},
+      {"--threads",
+       [&](const std::string& s) {
+         o.threads = parse_count("--threads", s);
+         if (o.threads == 0) throw std::invalid_argument("--threads expects at least 1, got '" + s + "'");
+       }},
   };
   std::map<std::string, bool*> switches{{"--no-project", nullptr},
                                         {"--no-safety", nullptr},
@@ -206,15 +227,22 @@ int run(const Options& o) {
                       .ilsa_feature_angle(o.feature_angle)
                       .ilsa_fix_unattached_candidates(o.fix_unattached)
                       .ilsa_crease_kink_angle(o.kink_angle.value_or(180. - o.feature_angle))
+                      .ilsa_minimum_quality_gain(o.minimum_gain)
                       .do_project(o.project)
                       .use_safety_constraints(o.safety)
                       .ilsa_quality_monotone(o.monotone)
                       .ilsa_reject_worsening_moves(o.reject_worsening)
                       .ilsa_fidelity_tolerance(o.fidelity_tolerance)
                       .verbose(o.verbose);
-  const PMP::ILSA_statistics s = o.quality_floor
-                                     ? PMP::smooth_surface_mesh_ilsa(mesh, np.ilsa_quality_floor(*o.quality_floor))
-                                     : PMP::smooth_surface_mesh_ilsa(mesh, np);
+  // Sequential with one thread, TBB otherwise (when the package was built with it).
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, o.threads);
+#endif
+  auto smooth = [&](const auto& parameters) {
+    return o.threads == 1 ? PMP::smooth_surface_mesh_ilsa<CGAL::Sequential_tag>(mesh, parameters)
+                          : PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(mesh, parameters);
+  };
+  const PMP::ILSA_statistics s = o.quality_floor ? smooth(np.ilsa_quality_floor(*o.quality_floor)) : smooth(np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   print_quality("after ", PMP::mesh_quality_ilsa(mesh));
@@ -223,7 +251,9 @@ int run(const Options& o) {
             << s.number_of_boundary_vertices << " boundary\n"
             << "moves: " << s.number_of_moves << " accepted, " << s.number_of_shortened_moves << " shortened, "
             << s.number_of_rejected_moves << " rejected by the safety check\n"
-            << std::setprecision(3) << "time: " << seconds << " s for " << s.number_of_iterations << " iterations\n";
+            << std::setprecision(3) << "time: " << seconds << " s for " << s.number_of_iterations << " iterations ("
+            << (o.threads == 1 || !tbb_available ? std::string("sequential") : std::to_string(o.threads) + " threads")
+            << ")\n";
   const PMP::ILSA_fidelity_summary f =
       PMP::mesh_fidelity_ilsa(original, mesh, CGAL::parameters::ilsa_feature_angle(o.feature_angle));
   std::cout << std::scientific << std::setprecision(2) << "fidelity: " << f.number_of_flipped_faces

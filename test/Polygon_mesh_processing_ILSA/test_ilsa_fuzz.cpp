@@ -4,7 +4,7 @@
 // vertices on the input surface, no NaN, no face below the input's minimum
 // aspect ratio or the quality floor, whichever is lower, the input's sharp
 // edges and the same edges of the result within the fidelity tolerance of
-// each other, both ways).
+// each other, both ways; the parallel run, with TBB, gives the same points).
 //
 // ILSA_FUZZ_CASES (environment) sets the number of cases (the default is the
 // short CI run), ILSA_FUZZ_FIRST the first case: case N is the same in every run.
@@ -57,10 +57,16 @@ int main() {
                         .ilsa_quality_monotone(monotone)
                         .ilsa_reject_worsening_moves(reject_worsening)
                         .ilsa_crease_kink_angle(kink);
-    if (default_floor)
+    // Sequential, and in parallel (with TBB), which must give the same points.
+    Surface_mesh parallel = original;
+    if (default_floor) {
       PMP::smooth_surface_mesh_ilsa(m, np);
-    else
+      PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(parallel, np);
+    } else {
       PMP::smooth_surface_mesh_ilsa(m, np.ilsa_quality_floor(floor));
+      PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(parallel, np.ilsa_quality_floor(floor));
+    }
+    const bool same_in_parallel = points_of(parallel) == points_of(m);
     // Ridge vertices are checked by the smoothing test; here: surface, flips, fixed vertices, NaN, minimum q.
     std::map<Surface_mesh::Vertex_index, PMP::ILSA_vertex_type> types;
     PMP::classify_vertices_ilsa(
@@ -81,7 +87,7 @@ int main() {
     const double effective_floor = monotone ? 1. : default_floor ? (std::max)(0.5, before.min_aspect_ratio) : floor;
     const bool kept_minimum = after.min_aspect_ratio >= (std::min)(before.min_aspect_ratio, effective_floor) - 1e-12;
     const bool ok = f.number_of_flipped_faces == 0 && f.max_vertex_distance <= 1e-9 && fixed_moved == 0 &&
-                    non_finite == 0 && !collapsed && kept_minimum && f.max_crease_deviation <= 3e-4;
+                    non_finite == 0 && !collapsed && kept_minimum && f.max_crease_deviation <= 3e-4 && same_in_parallel;
     if (!ok) {
       ++failures;
       std::cout << "case " << c << " (" << names[which] << ", iterations " << iterations << ", steps " << steps
@@ -91,7 +97,7 @@ int main() {
                 << "): flipped " << f.number_of_flipped_faces << ", distance " << f.max_vertex_distance
                 << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
                 << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
-                << f.max_crease_deviation << std::endl;
+                << f.max_crease_deviation << ", parallel run identical " << same_in_parallel << std::endl;
       const auto n0 = face_normals_of(original), n1 = face_normals_of(m);
       for (auto fd : faces(m))
         if (n0[std::size_t(fd)] * n1[std::size_t(fd)] < 0) {

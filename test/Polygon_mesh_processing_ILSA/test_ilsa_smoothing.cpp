@@ -5,7 +5,7 @@
 // Polyhedron_3 agree; the result does not depend on the vertex order (Jacobi);
 // named parameters chain in both orders; the range overload fixes the rest;
 // the default quality floor keeps the input's minimum aspect ratio; no move
-// that lowers its star's mean quality is kept.
+// that lowers its star's mean quality is kept; the convergence stop.
 #include "ilsa_test_utils.h"
 
 #include <CGAL/AABB_segment_primitive.h>
@@ -346,7 +346,40 @@ template <class Mesh> void test_worsening_moves_rejected() {
   assert(worsened_stars(unchecked) > 0);
 }
 
+// The stop (user manual, "Stopping early"): the run ends after the first
+// iteration that raises the mean aspect ratio by less than
+// ilsa_minimum_quality_gain; the iterations before it each gained more. The
+// first k iterations do not depend on the cap, so capped runs without the stop
+// give the mean after each iteration.
+template <class Mesh> void test_convergence_stop() {
+  Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
+  Mesh m = original;
+  const auto s = PMP::smooth_surface_mesh_ilsa(m);
+  const std::size_t ran = s.number_of_iterations;
+  auto mean_after = [&](std::size_t k) {
+    Mesh x = original;
+    const auto r = PMP::smooth_surface_mesh_ilsa(
+        x, CGAL::parameters::number_of_iterations(unsigned(k)).ilsa_minimum_quality_gain(0.));
+    assert(r.number_of_iterations == k);
+    return PMP::mesh_quality_ilsa(x).mean_aspect_ratio;
+  };
+  std::cout << "convergence stop: " << ran << " of 20 iterations" << std::endl;
+  assert(ran >= 2 && ran < 20);
+  assert(points_of(m) == points_of([&] {
+           Mesh x = original;
+           PMP::smooth_surface_mesh_ilsa(
+               x, CGAL::parameters::number_of_iterations(unsigned(ran)).ilsa_minimum_quality_gain(0.));
+           return x;
+         }()));
+  // Up to the rounding of the mean in the input's coordinates.
+  assert(mean_after(ran) - mean_after(ran - 1) < 1e-4 + 1e-9);
+  for (std::size_t k = 1; k < ran; ++k) assert(mean_after(k) - mean_after(k - 1) >= 1e-4 - 1e-9);
+  assert(std::abs(mean_after(20) - PMP::mesh_quality_ilsa(m).mean_aspect_ratio) <= 0.002);
+}
+
 int main() {
+  test_convergence_stop<Surface_mesh>();
+  test_convergence_stop<Polyhedron>();
   test_worsening_moves_rejected<Surface_mesh>();
   test_worsening_moves_rejected<Polyhedron>();
   test_minimum_quality_kept<Surface_mesh>();

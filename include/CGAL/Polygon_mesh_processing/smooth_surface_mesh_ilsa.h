@@ -21,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/move_safety.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/penalty_adjustment.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
@@ -58,6 +59,9 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  * quadratic-penalty "soap film" step, and projects the moved vertices back onto
  * a frozen copy of the input (ridge vertices onto their own crease line).
  *
+ * @tparam ConcurrencyTag enables sequential or parallel sweeps: `CGAL::Sequential_tag` (the default),
+ *         `CGAL::Parallel_tag` (needs TBB) or `CGAL::Parallel_if_available_tag`. The result is
+ *         bit-identical whatever the tag and the number of threads.
  * @tparam VertexRange a model of `Range` of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
  * @tparam TriangleMesh a model of `FaceListGraph`, `EdgeListGraph` and `MutableFaceGraph`
  *         whose descriptors are hashable (`Surface_mesh`, `Polyhedron_3`, OpenMesh meshes, ...)
@@ -82,9 +86,17 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *                     `CGAL::to_double()` and written with the point type's `(x, y, z)` constructor.}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_iterations}
- *     \cgalParamDescription{the number of global iterations (the paper's max_global_iter_num)}
+ *     \cgalParamDescription{the largest number of global iterations (the paper's max_global_iter_num); see
+ * `ilsa_minimum_quality_gain` for the stop before it}
  *     \cgalParamType{unsigned int, at most 100000}
  *     \cgalParamDefault{`20`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_minimum_quality_gain}
+ *     \cgalParamDescription{the run stops before `number_of_iterations` once an iteration raises the mean aspect
+ * ratio of the faces by less than this (convergence); `0` runs every iteration. The number of iterations run is
+ * `ILSA_statistics::number_of_iterations`}
+ *     \cgalParamType{`double`, non-negative}
+ *     \cgalParamDefault{`1e-4`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_relaxation_steps}
  *     \cgalParamDescription{the number of sweeps of the ILSA and of the penalty step in each iteration
@@ -194,7 +206,8 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *      and non-manifold vertices, several connected components and
  *      self-intersections are accepted: isolated and non-manifold vertices are fixed.
  */
-template <typename VertexRange, typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename VertexRange, typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters,
           typename = std::enable_if_t<!internal::ILSA::is_named_parameters<TriangleMesh>::value>>
 ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMesh& tm,
                                          const NamedParameters& np = parameters::default_values()) {
@@ -225,6 +238,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const bool quality_monotone = choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), false);
   const bool reject_worsening = choose_parameter(get_parameter(np, internal_np::ilsa_reject_worsening_moves), true);
   const double fidelity_tolerance = choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), 3e-4);
+  const double minimum_gain = choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), 1e-4);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   // (ilsa_feature_angle, ilsa_fix_unattached_candidates and the constraint
   // maps are read by read_classification_parameters() below.)
@@ -234,6 +248,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   };
   require(quality_floor >= 0 && quality_floor < 1, "ilsa_quality_floor must be in [0, 1)");
   require(fidelity_tolerance > 0, "ilsa_fidelity_tolerance must be positive (infinity disables the check)");
+  require(minimum_gain >= 0 && std::isfinite(minimum_gain),
+          "ilsa_minimum_quality_gain must be non-negative and finite (0 runs every iteration)");
   require(double(iterations) >= 0 && double(iterations) <= 100000, "number_of_iterations must be in [0, 100000]");
   require(double(sweeps) >= 1 && double(sweeps) <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
   require(relax1 > 0 && relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
@@ -298,35 +314,56 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   std::vector<Vec3> pos = original.points, next, target(pos.size()), d, face_normals;
   std::vector<Vec3> vertex_normals(pos.size(), Vec3::Zero());
   std::vector<std::size_t> home(pos.size(), ilsa::npos), next_home, moved;
+  std::vector<unsigned char> guarded(pos.size(), 0);
   for (std::size_t v : neighborhoods.adjustable) home[v] = projector.initial_home(v);
   ilsa::Ilsa_workspace ilsa_workspace;
   ilsa::Penalty_workspace penalty_workspace;
+  // Convergence (user manual, "Stopping early"): the mean aspect ratio of the
+  // faces, each face's computed in parallel, summed in face order.
+  std::vector<double> face_quality(original.number_of_faces());
+  auto mean_quality = [&]() {
+    ilsa::parallel_for<ConcurrencyTag>(face_quality.size(), [&](std::size_t f) {
+      const auto& t = original.faces[f];
+      face_quality[f] = triangle_aspect_ratio(pos[t[0]], pos[t[1]], pos[t[2]]);
+    });
+    double sum = 0;
+    for (double q : face_quality) sum += q;
+    return sum / double((std::max)(face_quality.size(), std::size_t(1)));
+  };
+  double mean_q = minimum_gain > 0 ? mean_quality() : 0.;
 
   for (std::size_t step = 0; step < std::size_t(iterations); ++step) {
     // N(v): discrete normal of every smooth vertex of T_new (spec §1.2, normalised).
-    ilsa::compute_face_normals(original, pos, face_normals);
-    for (std::size_t v : neighborhoods.smooth) {
+    ilsa::compute_face_normals<ConcurrencyTag>(original, pos, face_normals);
+    ilsa::parallel_for<ConcurrencyTag>(neighborhoods.smooth.size(), [&](std::size_t i) {
+      const std::size_t v = neighborhoods.smooth[i];
       const Vec3 n = ilsa::discrete_normal(original, face_normals, v);
       vertex_normals[v] = n.norm() > 0 ? Vec3(n.normalized()) : n;
-    }
+    });
     // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices (Algo. 3).
-    ilsa::compute_ilsa_displacement(pos, neighborhoods, relax1, std::size_t(sweeps), tolerance, d, ilsa_workspace);
-    ilsa::adjust_displacement_by_penalty(original, pos, vertex_normals, neighborhoods, penalty, d, penalty_workspace);
+    ilsa::compute_ilsa_displacement<ConcurrencyTag>(pos, neighborhoods, relax1, std::size_t(sweeps), tolerance, d,
+                                                    ilsa_workspace);
+    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, vertex_normals, neighborhoods, penalty, d,
+                                                         penalty_workspace);
 
     // p(v): projection of v + d(v) onto T_ori (spec §5), then the safety check.
     next = pos;
     next_home = home;
-    moved.clear();
-    for (std::size_t v : neighborhoods.adjustable) {
+    ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {
+      const std::size_t v = neighborhoods.adjustable[i];
       target[v] = pos[v] + d[v];
       const auto r = project(v, target[v], pos[v], home[v]);
       next[v] = r.point;
       next_home[v] = r.home;
-      if (r.guarded) ++stats.number_of_guarded_projections;
+      guarded[v] = r.guarded;
+    });
+    moved.clear();
+    for (std::size_t v : neighborhoods.adjustable) {
+      stats.number_of_guarded_projections += guarded[v];
       if (next[v] != pos[v]) moved.push_back(v);
     }
     if (use_safety) {
-      const auto counts = safety.enforce(pos, home, target, moved, next, next_home, project);
+      const auto counts = safety.template enforce<ConcurrencyTag>(pos, home, target, moved, next, next_home, project);
       stats.number_of_shortened_moves += counts.shortened;
       stats.number_of_rejected_moves += counts.rejected;
       stats.number_of_moves += moved.size() - counts.rejected;
@@ -340,6 +377,11 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
       std::cerr << "ILSA iteration " << step + 1 << ": " << moved.size() << " moves, "
                 << stats.number_of_shortened_moves << " shortened and " << stats.number_of_rejected_moves
                 << " rejected so far\n";
+    if (minimum_gain > 0) {
+      const double before = mean_q;
+      mean_q = mean_quality();
+      if (mean_q - before < minimum_gain) break;
+    }
   }
 
   // T_new is written back; fixed and unmoved vertices are not touched.
@@ -356,9 +398,9 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
  * smooths all vertices of `tm` with ILSA; see the range overload for the
  * named parameters.
  */
-template <typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 ILSA_statistics smooth_surface_mesh_ilsa(TriangleMesh& tm, const CGAL_NP_CLASS& np = parameters::default_values()) {
-  return smooth_surface_mesh_ilsa(vertices(tm), tm, np);
+  return smooth_surface_mesh_ilsa<ConcurrencyTag>(vertices(tm), tm, np);
 }
 
 } // namespace Polygon_mesh_processing

@@ -59,16 +59,17 @@ struct Ilsa_workspace {
 /// Algo. 2: fills `d` (one entry per vertex, zero for fixed ones) and returns
 /// the number of sweeps run. `tolerance` stops the sweeps once no displacement
 /// changes by more than it.
-inline std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const Ilsa_neighborhoods& nb, double relax1,
-                                             std::size_t sweeps, double tolerance, std::vector<Vec3>& d,
-                                             Ilsa_workspace& ws) {
+template <class ConcurrencyTag>
+std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const Ilsa_neighborhoods& nb, double relax1,
+                                      std::size_t sweeps, double tolerance, std::vector<Vec3>& d, Ilsa_workspace& ws) {
   const Adjacency& N = nb.neighbors;
   d.assign(pos.size(), Vec3::Zero());
   ws.weights.resize(N.items.size());
 
   // Laplacian coordinate and inverse-distance weights α_ij = 1 / |v − v_j|.
   const double shortest = 1e-12; // a zero-length edge must not give an infinite weight
-  for (std::size_t v : nb.adjustable) {
+  parallel_for<ConcurrencyTag>(nb.adjustable.size(), [&](std::size_t i) {
+    const std::size_t v = nb.adjustable[i];
     Vec3 centroid = Vec3::Zero();
     for (std::size_t k = N.begin[v]; k < N.begin[v + 1]; ++k) {
       const Vec3& w = pos[N.items[k]];
@@ -76,9 +77,9 @@ inline std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const
       ws.weights[k] = 1. / (std::max)((pos[v] - w).norm(), shortest);
     }
     d[v] = centroid / double(N.size(v)) - pos[v];
-  }
+  });
 
-  return run_jacobi_sweeps(nb.adjustable, sweeps, tolerance, d, ws.next, [&](std::size_t v) {
+  return run_jacobi_sweeps<ConcurrencyTag>(nb.adjustable, sweeps, tolerance, d, ws.next, [&](std::size_t v) {
     Vec3 vec = Vec3::Zero();
     double S = 0;
     for (std::size_t k = N.begin[v]; k < N.begin[v + 1]; ++k) {

@@ -9,6 +9,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_JACOBI_SWEEPS_H
 
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
 
 #include <algorithm>
 #include <utility>
@@ -22,18 +23,18 @@ namespace ILSA {
 /// Runs at most `sweeps` sweeps of `update(v)` (the new value of `d[v]`, read
 /// from `d`) over `vertices`, stopping once no value changes by more than
 /// `tolerance`. `next` is the second buffer. Returns the number of sweeps run.
-template <class Update>
+template <class ConcurrencyTag, class Update>
 std::size_t run_jacobi_sweeps(const std::vector<std::size_t>& vertices, std::size_t sweeps, double tolerance,
                               std::vector<Vec3>& d, std::vector<Vec3>& next, const Update& update) {
   next = d; // entries the sweeps do not write stay equal in both buffers
   std::size_t sweep = 0;
   while (sweep < sweeps) {
     ++sweep;
-    double largest_change = 0;
-    for (std::size_t v : vertices) {
+    const double largest_change = parallel_max<ConcurrencyTag>(vertices.size(), [&](std::size_t i) {
+      const std::size_t v = vertices[i];
       next[v] = update(v);
-      largest_change = (std::max)(largest_change, (next[v] - d[v]).norm());
-    }
+      return (next[v] - d[v]).norm();
+    });
     std::swap(d, next);
     if (largest_change <= tolerance) break;
   }

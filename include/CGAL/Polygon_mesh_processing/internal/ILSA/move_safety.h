@@ -18,6 +18,7 @@
 
 #include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
@@ -62,8 +63,10 @@ public:
       }
     reference_.resize(m_.number_of_faces());
     for (std::size_t f = 0; f < m_.number_of_faces(); ++f) reference_[f] = own[f].isZero(0) ? neighbors[f] : own[f];
-    stamp_.assign(m_.number_of_faces(), 0);
+    offends_.assign(m_.number_of_faces(), 0);
     face_round_.assign(m_.number_of_faces(), 0);
+    deviation_round_.assign(m_.number_of_faces(), 0);
+    bad_.assign(m_.number_of_vertices(), 0);
     face_now_.assign(m_.number_of_faces(), 0.);
     vertex_round_.assign(m_.number_of_vertices(), 0);
     vertex_now_.assign(m_.number_of_vertices(), 0.);
@@ -80,38 +83,80 @@ public:
   /// `target`: the unprojected positions v + d; `next`/`next_home`: the
   /// projected positions, corrected in place. `moved` lists the vertices whose
   /// position changed. `project` re-projects a shortened move.
-  template <class Project>
+  ///
+  /// Each round runs in phases, each a loop whose iterations write only their
+  /// own element (user manual, "Parallel runs"): which faces offend, the cheap
+  /// tests of each vertex, the distances at `next` the fidelity tests share,
+  /// the fidelity tests, the shortening of the offending moves.
+  template <class ConcurrencyTag, class Project>
   Counts enforce(const std::vector<Vec3>& previous, const std::vector<std::size_t>& previous_home,
                  const std::vector<Vec3>& target, const std::vector<std::size_t>& moved, std::vector<Vec3>& next,
                  std::vector<std::size_t>& next_home, const Project& project) {
     for (std::size_t v : moved) tries_[v] = 0, is_moved_[v] = 1;
-    std::vector<std::size_t> to_check(moved), offenders;
+    const bool fidelity = std::isfinite(fidelity_tolerance_);
+    std::vector<std::size_t> to_check(moved), offenders, faces, vertices, undecided;
     while (!to_check.empty()) {
       ++round_;
+      // The faces around the vertices to check: which offend.
+      faces.clear();
+      for (std::size_t v : to_check)
+        for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+          if (face_round_[*f] != round_) face_round_[*f] = round_, faces.push_back(*f);
+      parallel_for<ConcurrencyTag>(faces.size(), [&](std::size_t i) {
+        const std::size_t f = faces[i];
+        offends_[f] = offends(previous, next, f);
+      });
       // A vertex is shortened when any face around it offends, so every moved
-      // vertex of an offending face is.
-      offenders.clear();
-      for (std::size_t v : to_check) {
-        bool bad = false;
-        for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v) && !bad; ++f)
-          bad = offends(previous, next, *f);
-        const bool rate = !bad && (quality_floor_ > 0 || reject_worsening_);
-        const Star_quality now = rate ? star_quality(next, v, next[v]) : Star_quality();
+      // vertex of an offending face is; then the quality tests.
+      parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
+        const std::size_t v = to_check[i];
+        bad_[v] = 0;
+        for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+          if (offends_[*f]) bad_[v] = 1;
+        if (bad_[v]) return;
+        if (!(quality_floor_ > 0 || reject_worsening_)) return;
+        const Star_quality now = star_quality(next, v, next[v]);
         // The star's worst triangle may not get worse and end below the floor.
-        if (!bad && quality_floor_ > 0)
-          bad = now.worst < quality_floor_ && now.worst < star_quality(previous, v, previous[v]).worst;
-        if (!bad && reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
+        if (quality_floor_ > 0 && now.worst < quality_floor_ &&
+            now.worst < star_quality(previous, v, previous[v]).worst)
+          bad_[v] = 1;
+        else if (reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
           // Dropped at once: a shorter step along a worsening direction rarely
           // helps, and each halving costs a re-projection.
-          bad = true;
+          bad_[v] = 1;
           tries_[v] = halvings_;
         }
-        if (!bad && std::isfinite(fidelity_tolerance_)) bad = deviates(previous, next, v);
-        if (!bad && std::isfinite(fidelity_tolerance_))
-          bad = crease_deviates(previous, previous_home, next, next_home, v);
-        if (bad) offenders.push_back(v);
+      });
+      if (fidelity) {
+        // The distances at `next` that neighbouring vertices share.
+        undecided.clear();
+        vertices.clear();
+        faces.clear();
+        for (std::size_t v : to_check) {
+          if (bad_[v]) continue;
+          undecided.push_back(v);
+          auto share = [&](std::size_t w) {
+            if (vertex_round_[w] != round_) vertex_round_[w] = round_, vertices.push_back(w);
+          };
+          share(v);
+          for (const std::size_t* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
+          for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+            if (deviation_round_[*f] != round_) deviation_round_[*f] = round_, faces.push_back(*f);
+        }
+        parallel_for<ConcurrencyTag>(
+            vertices.size(), [&](std::size_t i) { vertex_now_[vertices[i]] = vertex_deviation(next, vertices[i]); });
+        parallel_for<ConcurrencyTag>(faces.size(),
+                                     [&](std::size_t i) { face_now_[faces[i]] = face_deviation(next, faces[i]); });
+        parallel_for<ConcurrencyTag>(undecided.size(), [&](std::size_t i) {
+          const std::size_t v = undecided[i];
+          bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
+        });
       }
-      for (std::size_t v : offenders) {
+      offenders.clear();
+      for (std::size_t v : to_check)
+        if (bad_[v]) offenders.push_back(v);
+      parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
+        const std::size_t v = offenders[i];
         ++tries_[v];
         if (tries_[v] <= halvings_) {
           const double t = std::ldexp(1., -int(tries_[v]));
@@ -122,7 +167,7 @@ public:
           next[v] = previous[v];
           next_home[v] = previous_home[v];
         }
-      }
+      });
       // Only the stars of the vertices just changed need a new look.
       to_check.clear();
       for (std::size_t v : offenders)
@@ -158,15 +203,9 @@ public:
 
 private:
   // A face offends if it is flipped or collapsed now and was not before.
-  bool offends(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t f) {
-    if (stamp_[f] == round_) return true;
-    const bool was_bad = collapsed(previous, f) || flipped(previous, f);
+  bool offends(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t f) const {
     const bool is_bad = collapsed(next, f) || flipped(next, f);
-    if (is_bad && !was_bad) {
-      stamp_[f] = round_;
-      return true;
-    }
-    return false;
+    return is_bad && !(collapsed(previous, f) || flipped(previous, f));
   }
 
   // Whether the move of `v` takes the smoothed surface farther than the
@@ -177,11 +216,11 @@ private:
   // faces around the vertices concerned and, when those are not close enough,
   // to the faces around their neighbours: vertices travel less than an edge
   // length per iteration, so these faces cover the points measured.
-  // The distances at `next` are kept for the round: `next` does not change
-  // while a round checks its vertices, and neighbouring vertices share them.
-  bool deviates(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t v) {
+  // The distances at `next` are computed once per round (`vertex_now_`,
+  // `face_now_`): `next` does not change while a round checks its vertices,
+  // and neighbouring vertices share them.
+  bool deviates(const std::vector<Vec3>& previous, std::size_t v) const {
     auto cuts = [&](std::size_t w) {
-      if (vertex_round_[w] != round_) vertex_round_[w] = round_, vertex_now_[w] = vertex_deviation(next, w);
       const double now = vertex_now_[w];
       return now > fidelity_tolerance_ && now > vertex_deviation(previous, w);
     };
@@ -189,7 +228,6 @@ private:
     for (const std::size_t* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w)
       if (cuts(*w)) return true;
     for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-      if (face_round_[*f] != round_) face_round_[*f] = round_, face_now_[*f] = face_deviation(next, *f);
       const double now = face_now_[*f];
       if (now > fidelity_tolerance_ && now > face_deviation(previous, *f)) return true;
     }
@@ -339,11 +377,13 @@ private:
   bool reject_worsening_;
   std::size_t halvings_;
   std::vector<Vec3> reference_;
-  std::vector<std::size_t> stamp_;                     // round in which a face was found offending
-  std::vector<std::size_t> tries_;                     // halvings applied to a vertex's move
-  std::vector<std::size_t> checked_;                   // round in which a vertex was queued for a check
-  std::vector<std::size_t> face_round_, vertex_round_; // round of the deviations below
-  std::vector<double> face_now_, vertex_now_;          // face_deviation / vertex_deviation at `next`
+  std::vector<unsigned char> offends_;                      // per face, in the current round
+  std::vector<unsigned char> bad_;                          // per vertex: its move offends, in the current round
+  std::vector<std::size_t> tries_;                          // halvings applied to a vertex's move
+  std::vector<std::size_t> checked_;                        // round in which a vertex was queued for a check
+  std::vector<std::size_t> face_round_;                     // round in which a face's offending flag was computed
+  std::vector<std::size_t> deviation_round_, vertex_round_; // round of the deviations below
+  std::vector<double> face_now_, vertex_now_;               // face_deviation / vertex_deviation at `next`
   std::vector<unsigned char> is_moved_;
   std::size_t round_ = 0;
 };

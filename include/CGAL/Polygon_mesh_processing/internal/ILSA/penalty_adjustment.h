@@ -94,23 +94,23 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 
 /// Algo. 3 on the smooth vertices of `nb`; `d` holds Algo. 2's displacements on
 /// entry and the adjusted ones on exit. Returns the number of sweeps run.
-inline std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
-                                                  const std::vector<Vec3>& vertex_normals, const Ilsa_neighborhoods& nb,
-                                                  const Penalty_parameters& p, std::vector<Vec3>& d,
-                                                  Penalty_workspace& ws) {
+template <class ConcurrencyTag>
+std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
+                                           const std::vector<Vec3>& vertex_normals, const Ilsa_neighborhoods& nb,
+                                           const Penalty_parameters& p, std::vector<Vec3>& d, Penalty_workspace& ws) {
   // β_j from the current faces; a floor at 1e-3 of the mean area keeps a
   // degenerate face from swamping the star.
   ws.beta.resize(m.number_of_faces());
-  double mean_area = 0;
-  for (std::size_t f = 0; f < m.number_of_faces(); ++f) {
-    ws.beta[f] = 0.5 * area_vector(pos, m.faces[f]).norm();
-    mean_area += ws.beta[f];
-  }
+  parallel_for<ConcurrencyTag>(m.number_of_faces(),
+                               [&](std::size_t f) { ws.beta[f] = 0.5 * area_vector(pos, m.faces[f]).norm(); });
+  double mean_area = 0; // summed in face order, whatever the number of threads
+  for (double area : ws.beta) mean_area += area;
   mean_area /= double((std::max)(m.number_of_faces(), std::size_t(1)));
   const double smallest_area = (std::max)(1e-3 * mean_area, 1e-300);
-  for (double& b : ws.beta) b = 1. / (std::max)(b, smallest_area);
+  parallel_for<ConcurrencyTag>(m.number_of_faces(),
+                               [&](std::size_t f) { ws.beta[f] = 1. / (std::max)(ws.beta[f], smallest_area); });
 
-  return run_jacobi_sweeps(nb.smooth, p.sweeps, p.tolerance, d, ws.next, [&](std::size_t v) {
+  return run_jacobi_sweeps<ConcurrencyTag>(nb.smooth, p.sweeps, p.tolerance, d, ws.next, [&](std::size_t v) {
     const Vec3 d_new = minimize_penalty_function(m, pos, d, ws.beta, vertex_normals[v], v, p);
     return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
   });

@@ -57,7 +57,8 @@ public:
     triangles_.reserve(m_.number_of_faces());
     for (const auto& f : m_.faces)
       triangles_.emplace_back(point(m_.points[f[0]]), point(m_.points[f[1]]), point(m_.points[f[2]]));
-    if (!triangles_.empty()) face_tree_.rebuild(triangles_.cbegin(), triangles_.cend());
+    // Built here, not lazily at the first query, which may come from several threads.
+    if (!triangles_.empty()) face_tree_.rebuild(triangles_.cbegin(), triangles_.cend()), face_tree_.build();
 
     // Patches: faces connected across non-sharp edges (union-find).
     patch_.resize(m_.number_of_faces());
@@ -79,7 +80,7 @@ public:
       segment_edge_.push_back(e);
       segments_.emplace_back(point(m_.points[m_.edges[e][0]]), point(m_.points[m_.edges[e][1]]));
     }
-    if (!segments_.empty()) crease_tree_.rebuild(segments_.cbegin(), segments_.cend());
+    if (!segments_.empty()) crease_tree_.rebuild(segments_.cbegin(), segments_.cend()), crease_tree_.build();
   }
 
   /// Home of vertex `v` of the original mesh: an incident face, or for a ridge

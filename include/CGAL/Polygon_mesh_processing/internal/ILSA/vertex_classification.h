@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
 
 #include <cmath>
 #include <numeric>
@@ -39,9 +40,10 @@ inline Vec3 discrete_normal(const Flat_mesh& m, const std::vector<Vec3>& face_no
 }
 
 /// Unit normals of all faces for the positions `pos`.
-inline void compute_face_normals(const Flat_mesh& m, const std::vector<Vec3>& pos, std::vector<Vec3>& normals) {
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+void compute_face_normals(const Flat_mesh& m, const std::vector<Vec3>& pos, std::vector<Vec3>& normals) {
   normals.resize(m.number_of_faces());
-  for (std::size_t f = 0; f < m.number_of_faces(); ++f) normals[f] = unit_normal(pos, m.faces[f]);
+  parallel_for<ConcurrencyTag>(m.number_of_faces(), [&](std::size_t f) { normals[f] = unit_normal(pos, m.faces[f]); });
 }
 
 /// What the classification stage hands to the smoothing stages.
