@@ -1,5 +1,5 @@
-// Vertex classification (spec §1) on shapes with known answers, on
-// Surface_mesh and Polyhedron_3, and the user-constraint overrides (§1.5).
+// Vertex classification (paper §3) on shapes with known answers, on
+// Surface_mesh and Polyhedron_3, and the user-constraint overrides.
 #include "ilsa_test_utils.h"
 
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
@@ -41,7 +41,7 @@ template <class Mesh> void test_grid() {
   }
 }
 
-// Fandisk: counts of the spec §1.4 table (paper's 160° rule), and every ridge
+// Fandisk: counts with the paper's 160° rule, and every ridge
 // vertex lies on exactly two edges that CGAL's own detect_sharp_edges finds.
 template <class Mesh> void test_fandisk() {
   const Mesh m = read_mesh<Mesh>(data_file("fandisk.off"));
@@ -64,8 +64,8 @@ template <class Mesh> void test_fandisk() {
     assert(incident == 2);
   }
 
-  // The §1.4 rule: with the paper's rule fandisk has 2 candidates without a
-  // sharp edge (spec table); smoothing them turns exactly those into smooth vertices.
+  // Candidates without a sharp edge: with the paper's rule fandisk has 2 of
+  // them; smoothing them turns exactly those into smooth vertices.
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Type> relaxed;
   const auto paper = CGAL::parameters::ilsa_crease_kink_angle(180.); // the paper's four-type rule, no kinks
   const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(relaxed),
@@ -96,7 +96,7 @@ template <class Mesh> void test_fandisk() {
   }
 }
 
-// Horse with the paper's rule: the counts of the spec §1.4 table.
+// Horse with the paper's rule: 1698 ridge and 2792 corner vertices.
 void test_horse_counts() {
   const Surface_mesh m = read_mesh<Surface_mesh>(data_file("horse.ply"));
   std::map<Surface_mesh::Vertex_index, Type> types;
@@ -120,7 +120,7 @@ void test_horse_counts() {
          s.number_of_ridge_vertices + s.number_of_corner_vertices);
 }
 
-// User constraints override the detection (spec §1.5).
+// User constraints override the detection.
 template <class Mesh> void test_user_constraints() {
   using vd = typename boost::graph_traits<Mesh>::vertex_descriptor;
   using ed = typename boost::graph_traits<Mesh>::edge_descriptor;

@@ -28,10 +28,11 @@ namespace ILSA {
 
 /// Default feature (dihedral) angle in degrees: the paper's 8π/9.
 constexpr double default_feature_angle = 160.;
-/// Default of the spec §1.4 rule: a ridge candidate with no sharp edge is fixed (paper).
+/// Default of the rule for ridge candidates with no sharp edge: fixed, as in the paper
+/// (user manual, "Feature Angle and Ridge Candidates Without Sharp Edges").
 constexpr bool default_fix_unattached_candidates = true;
 
-/// Reads the classification parameters of `np` (spec §1, §1.5) into
+/// Reads the classification parameters of `np` (paper §3; user constraints as documented) into
 /// `options`; the user's constraint maps are copied into the flat arrays
 /// `vertex_store` and `edge_store`, which `options` points to.
 template <class TriangleMesh, class NamedParameters>

@@ -276,7 +276,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     movable[found->second] = 1;
   }
 
-  // Classify vertices on T_ori (spec §1).
+  // Classify vertices on T_ori (paper §3).
   const ilsa::Vertex_classification classification = ilsa::classify(original, options);
   ILSA_statistics stats;
   ilsa::count_types(classification, stats);
@@ -333,7 +333,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   double mean_q = minimum_gain > 0 ? mean_quality() : 0.;
 
   for (std::size_t step = 0; step < std::size_t(iterations); ++step) {
-    // N(v): discrete normal of every smooth vertex of T_new (spec §1.2, normalised).
+    // N(v): discrete normal of every smooth vertex of T_new (paper §3, normalised).
     ilsa::compute_face_normals<ConcurrencyTag>(original, pos, face_normals);
     ilsa::parallel_for<ConcurrencyTag>(neighborhoods.smooth.size(), [&](std::size_t i) {
       const std::size_t v = neighborhoods.smooth[i];
@@ -346,7 +346,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, vertex_normals, neighborhoods, penalty, d,
                                                          penalty_workspace);
 
-    // p(v): projection of v + d(v) onto T_ori (spec §5), then the safety check.
+    // p(v): projection of v + d(v) onto T_ori (user manual, "Projection guard"), then the safety check.
     next = pos;
     next_home = home;
     ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {

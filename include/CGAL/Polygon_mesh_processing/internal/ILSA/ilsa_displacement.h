@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Stage 2 of ILSA (spec §3, paper's Algo. 2): the Laplacian displacement of
+// Stage 2 of ILSA (paper's Algo. 2): the Laplacian displacement of
 // every adjustable vertex, diffused over its neighbours with inverse-distance
 // weights. Jacobi sweeps: each sweep reads the previous one's values only.
 
@@ -21,7 +21,7 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
-/// Which vertices move and which neighbours drive them (spec §3): all one-ring
+/// Which vertices move and which neighbours drive them (paper's Algo. 2): all one-ring
 /// vertices for a smooth node, only its two attached-sharp nodes for a ridge node.
 struct Ilsa_neighborhoods {
   std::vector<std::size_t> adjustable; // smooth and ridge vertices allowed to move

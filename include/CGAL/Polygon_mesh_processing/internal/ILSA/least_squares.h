@@ -14,9 +14,9 @@ namespace internal {
 namespace ILSA {
 
 /// Minimum-norm least-squares solution of the symmetric 3x3 system `H x = r` by
-/// SVD (spec §1.2 and §4). Singular values below `relative_threshold` times the
-/// largest one count as zero, so a rank-deficient `H` (a flat star, a penalty
-/// system without area term) still has a well-defined, bounded solution.
+/// SVD (the discrete normal of paper §3 and the penalty system of Algo. 3). Singular values below `relative_threshold`
+/// times the largest one count as zero, so a rank-deficient `H` (a flat star, a penalty system without area term) still
+/// has a well-defined, bounded solution.
 inline Vec3 solve_by_svd(const Eigen::Matrix3d& H, const Vec3& r, double relative_threshold) {
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
   svd.setThreshold(relative_threshold);

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Stage 3 of ILSA (spec §4, paper's Algo. 3): the displacement of every smooth
+// Stage 3 of ILSA (paper's Algo. 3): the displacement of every smooth
 // vertex is corrected toward the minimiser of the quadratic penalty function
 //   Q(x; μ) = g(x) + (1/μ) c(x)²,
 //   g(x)    = wl (1/n) Σ_j |x − p_j|² + wa Σ_j β_j s(x, p_j, p_j+1)²,
@@ -40,7 +40,7 @@ struct Penalty_workspace {
   std::vector<double> beta; // β = 1 / s(v, v_j, v_j+1), per face of the current mesh
 };
 
-/// Plane of the soft constraint c(x) = 0 (spec §4), as `a · (x − v) = k` with
+/// Plane of the soft constraint c(x) = 0 (user manual, "Plane constraint units"), as `a · (x − v) = k` with
 /// unit `a`. With no displacement yet it is the tangent plane at `v`; otherwise
 /// the plane through `v + d` perpendicular to `d`. The paper's second form,
 /// `d · (x − v) − |d|²`, is this one multiplied by `|d|`: normalising it gives

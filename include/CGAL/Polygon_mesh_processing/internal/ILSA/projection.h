@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Stage 4 of ILSA (spec §5): projection of the moved vertices back onto the
+// Stage 4 of ILSA (user manual, "Projection guard"): projection of the moved vertices back onto the
 // frozen original mesh. Smooth vertices go to the closest point of the
 // original surface (AABB tree over its faces), ridge vertices to the closest
 // point of their own crease polyline (AABB tree over the sharp edges).

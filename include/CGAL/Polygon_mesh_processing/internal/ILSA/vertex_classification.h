@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Stage 1 of ILSA (spec §1): discrete normals by least squares, ridge
+// Stage 1 of ILSA (paper §3): discrete normals by least squares, ridge
 // candidates, sharp edges, attached-sharp nodes and the four vertex types.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_VERTEX_CLASSIFICATION_H
@@ -21,7 +21,7 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
-/// Discrete normal `x` of vertex `v` (spec §1.2): least-squares solution of
+/// Discrete normal `x` of vertex `v` (paper §3): least-squares solution of
 /// `A x = 1`, the rows of `A` being the unit normals of the faces around `v`.
 /// Solved through the normal equations `AᵀA x = Aᵀ1` with the SVD; a relative
 /// threshold of 1e-12 on the singular values of `AᵀA` (1e-6 on those of `A`)
@@ -50,7 +50,7 @@ void compute_face_normals(const Flat_mesh& m, const std::vector<Vec3>& pos, std:
 struct Vertex_classification {
   std::vector<ILSA_vertex_type> type;
   std::vector<unsigned char> ridge_candidate; // |x| above the feature threshold
-  std::vector<unsigned char> sharp_edge;      // per edge (spec §1.3 or the user's edge map)
+  std::vector<unsigned char> sharp_edge;      // per edge (paper §3 or the user's edge map)
   std::vector<std::size_t> crease_of_edge;    // crease polyline of a sharp edge, npos otherwise
   std::vector<unsigned char> feature_edge;    // sharp, or (without the user's edge map) dihedral angle below θ_f
   std::vector<std::array<std::size_t, 2>> attached_sharp; // a ridge vertex's two attached-sharp nodes
@@ -64,18 +64,18 @@ struct Vertex_classification {
 
 struct Classification_options {
   double feature_angle_degrees = 160.;   // dihedral angle θ_f below which an edge is sharp
-  bool fix_unattached_candidates = true; // spec §1.4: candidate without sharp edge is a corner (paper) or smooth
+  bool fix_unattached_candidates = true; // candidate without sharp edge: a corner (paper) or smooth
   double kink_angle_degrees = 180.;      // a crease turning by more than this at a vertex makes it a corner
   const std::vector<unsigned char>* constrained_vertices = nullptr; // user's vertex_is_constrained_map
   const std::vector<unsigned char>* constrained_edges = nullptr;    // user's edge_is_constrained_map
 };
 
-/// Classifies the vertices of `m` (spec §1), user constraints overriding (§1.5).
+/// Classifies the vertices of `m` (paper §3), user constraints overriding.
 inline Vertex_classification classify(const Flat_mesh& m, const Classification_options& opt) {
   const std::size_t nv = m.number_of_vertices(), ne = m.edges.size();
   const double pi = 3.14159265358979323846;
   // Normal deviation of two face groups meeting at the feature angle, and the
-  // length |x| such a fold gives the discrete normal (spec §1.2).
+  // length |x| such a fold gives the discrete normal (user manual, classification).
   const double deviation = pi - opt.feature_angle_degrees * pi / 180.;
   const double candidate_length = 1. / std::cos(deviation / 2.);
   const double sharp_cosine = std::cos(deviation);
@@ -121,13 +121,13 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
     if (fs[0] == npos || fs[1] == npos) continue;
     // Dihedral angle below θ_f <=> face normals more than π − θ_f apart. Such
     // an edge is sharp (a crease edge) only between two ridge candidates
-    // (spec §1.3); the others are still feature edges the safety check keeps.
+    // (paper §3); the others are still feature edges the safety check keeps.
     c.feature_edge[e] = face_normals[fs[0]].dot(face_normals[fs[1]]) < sharp_cosine;
     c.sharp_edge[e] = c.feature_edge[e] && c.ridge_candidate[ends[0]] && c.ridge_candidate[ends[1]];
   }
   for (std::size_t e = 0; e < ne; ++e) c.feature_edge[e] = c.feature_edge[e] || c.sharp_edge[e];
 
-  // Attached-sharp nodes decide between ridge and corner (spec §1.4, §1.5).
+  // Attached-sharp nodes decide between ridge and corner (paper §3), user edges overriding.
   for (std::size_t v = 0; v < nv; ++v) {
     if (c.type[v] != ILSA_vertex_type::Smooth) continue;
     std::size_t count = 0;
