@@ -16,7 +16,7 @@ using namespace ilsa_test;
 
 namespace {
 
-const std::vector<std::size_t> thread_counts{1, 2, 3, 8};
+const std::vector<std::size_t> thread_counts{1, 2, 8};
 
 // Runs `smooth(mesh)` sequentially, then in parallel with each thread count,
 // and checks that every run gives the sequential points exactly.
