@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_CLASSIFY_VERTICES_ILSA_H
 #define CGAL_POLYGON_MESH_PROCESSING_CLASSIFY_VERTICES_ILSA_H

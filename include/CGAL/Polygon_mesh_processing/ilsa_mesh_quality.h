@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Triangle shape measures and mesh quality summaries. The smoother, the
 // example tools, the benchmark and the tests all use these functions.

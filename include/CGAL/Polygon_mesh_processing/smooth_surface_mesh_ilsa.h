@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // ILSA, the improved Laplacian smoothing approach of L. Chen, Y. Zheng,
 // J. Chen and Y. Liang (ICCS 2007). This header reads the named parameters and

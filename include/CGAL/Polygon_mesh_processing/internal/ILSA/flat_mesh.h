@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The flat, index-based copy of the input mesh on which every ILSA stage runs.
 // It is built once per call, in one place, so the sweeps never traverse the

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 2 of ILSA (paper's Algo. 2): the Laplacian displacement of
 // every adjustable vertex, diffused over its neighbours with inverse-distance

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The sweep loop shared by Algo. 2 and Algo. 3 (user manual, "Parallel Runs"): Jacobi
 // sweeps, every vertex reading the previous sweep's values and writing into a

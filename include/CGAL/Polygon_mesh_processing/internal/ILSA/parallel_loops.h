@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The loops every per-vertex and per-face stage runs through. With
 // `CGAL::Parallel_tag` they run with TBB, with `CGAL::Sequential_tag` as a

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 3 of ILSA (paper's Algo. 3): the displacement of every smooth
 // vertex is corrected toward the minimiser of the quadratic penalty function

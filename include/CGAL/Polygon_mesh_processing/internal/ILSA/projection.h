@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 4 of ILSA (user manual, "Projection guard"): projection of the moved vertices back onto the
 // frozen original mesh. Smooth vertices go to the closest point of the

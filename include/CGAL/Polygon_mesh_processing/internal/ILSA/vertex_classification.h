@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Stage 1 of ILSA (paper §3): discrete normals by least squares, ridge
 // candidates, sharp edges, attached-sharp nodes and the four vertex types.
