@@ -1,5 +1,5 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Extends CGAL's list of named parameters with the tags of the ILSA smoother, so
 // that `CGAL::parameters::number_of_iterations(5).ilsa_penalty_mu(0.1)` and
@@ -8,10 +8,21 @@
 // CGAL includes this list several times, each time with another definition of
 // `CGAL_add_named_parameter` (enum tags, member functions, free functions), so
 // this file must have no include guard. It is found before CGAL's own copy
-// because the package's `include/` directory precedes the system one; it then
-// pulls in CGAL's list with `#include_next`.
+// because the package's include directory precedes CGAL's (the CMake target
+// `CGAL::Polygon_mesh_processing_ILSA` puts it first). It then pulls in CGAL's
+// list:
+// - by the path in `CGAL_ILSA_CGAL_PARAMETERS_INTERFACE` when it is defined
+//   (standard C++, any compiler; the CMake target defines it with the path of
+//   the CGAL found at configure time);
+// - otherwise with `#include_next`, a GCC/Clang extension.
 
+#if defined(CGAL_ILSA_CGAL_PARAMETERS_INTERFACE)
+#include CGAL_ILSA_CGAL_PARAMETERS_INTERFACE
+#elif defined(__GNUC__) || defined(__clang__)
 #include_next <CGAL/STL_Extension/internal/parameters_interface.h>
+#else
+#error "Define CGAL_ILSA_CGAL_PARAMETERS_INTERFACE as the quoted path of CGAL's CGAL/STL_Extension/internal/parameters_interface.h (the CMake target CGAL::Polygon_mesh_processing_ILSA does)."
+#endif
 
 // ILSA parameters (see smooth_surface_mesh_ilsa.h for their meaning)
 // clang-format off

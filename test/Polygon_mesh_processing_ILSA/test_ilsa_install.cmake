@@ -1,0 +1,59 @@
+# The package used from another project, two ways (run with cmake -P):
+#  MODE=install: `cmake --install` into a fresh prefix installs nothing that
+#    would replace a file of CGAL's installation; a consumer project finds the
+#    package with find_package(), builds, and smooths INPUT bit-identically to
+#    the ilsa_smooth TOOL.
+#  MODE=subdirectory: a parent project adds the source tree with
+#    add_subdirectory() (see parent/CMakeLists.txt, which checks its settings);
+#    the compile command of its program carries no warning flag of the package.
+# Also: -DBUILD=<package build dir> -DSOURCE=<package source> -DWORK=<scratch dir>
+#       -DCGAL_INCLUDE=<CGAL's include dirs> -DCXX=<compiler> -DINPUT=<mesh>
+
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+set(here "${CMAKE_CURRENT_LIST_DIR}")
+
+function(run what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${status}):\n${out}\n${err}")
+  endif()
+endfunction()
+
+if(MODE STREQUAL "install")
+  set(prefix "${WORK}/prefix")
+  run("cmake --install" "${CMAKE_COMMAND}" --install "${BUILD}" --prefix "${prefix}")
+  file(GLOB_RECURSE installed RELATIVE "${prefix}" "${prefix}/*")
+  list(LENGTH installed count)
+  set(clashes "")
+  foreach(cgal_include ${CGAL_INCLUDE})
+    get_filename_component(cgal_prefix "${cgal_include}" DIRECTORY)
+    foreach(file ${installed})
+      if(EXISTS "${cgal_prefix}/${file}")
+        list(APPEND clashes "${cgal_prefix}/${file}")
+      endif()
+    endforeach()
+  endforeach()
+  if(clashes OR count LESS 10)
+    message(FATAL_ERROR "installed ${count} files; these would replace files of CGAL's installation: ${clashes}")
+  endif()
+  message(STATUS "installed ${count} files, none in place of a file of CGAL's installation")
+
+  run("configuring the consumer" "${CMAKE_COMMAND}" -S "${here}/consumer" -B "${WORK}/consumer"
+      "-DCMAKE_PREFIX_PATH=${prefix}" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_COMPILER=${CXX}")
+  run("building the consumer" "${CMAKE_COMMAND}" --build "${WORK}/consumer")
+  run("the consumer" "${WORK}/consumer/ilsa_consumer" "${INPUT}" "${WORK}/consumer.off")
+  run("ilsa_smooth" "${TOOL}" "${INPUT}" "${WORK}/tool.off")
+  run("comparing" "${CMAKE_COMMAND}" -E compare_files "${WORK}/consumer.off" "${WORK}/tool.off")
+  message(STATUS "the consumer's output equals ilsa_smooth's")
+elseif(MODE STREQUAL "subdirectory")
+  run("configuring the parent" "${CMAKE_COMMAND}" -S "${here}/parent" -B "${WORK}/parent" "-DILSA_SOURCE_DIR=${SOURCE}"
+      -DCMAKE_EXPORT_COMPILE_COMMANDS=ON "-DCMAKE_CXX_COMPILER=${CXX}")
+  file(READ "${WORK}/parent/compile_commands.json" commands)
+  if(NOT commands MATCHES "ilsa_consumer.cpp" OR commands MATCHES " -W" OR commands MATCHES " -O")
+    message(FATAL_ERROR "the parent's compile command:\n${commands}")
+  endif()
+  message(STATUS "the parent's compile command gets no warning or optimisation flag")
+else()
+  message(FATAL_ERROR "MODE must be install or subdirectory")
+endif()
