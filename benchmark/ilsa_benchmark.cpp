@@ -49,7 +49,7 @@ namespace {
 
 // Dihedral feature angle shared by every method: ILSA's default (160 degrees),
 // i.e. a normal deviation of 20 degrees for detect_sharp_edges.
-const double feature_angle = 160.;
+const double feature_angle = 20.; // between face normals, as detect_sharp_edges() takes it
 
 struct Method {
   std::string name;
@@ -224,7 +224,7 @@ int main(int argc, char** argv) {
   const bool ceres = false;
 #endif
   std::cout << "Runs per method: " << runs << " (median wall time); CGAL peers: " << peer_iterations
-            << " iterations; sharp edges for the peers: detect_sharp_edges at " << 180. - feature_angle
+            << " iterations; sharp edges for the peers: detect_sharp_edges at " << feature_angle
             << " degrees; Ceres (area smoothing): " << (ceres ? "yes" : "no") << "\n\n";
   std::cout << "| mesh | method | q min | q mean | q<0.3 % | min angle | flipped | max dist | Hausdorff | "
                "crease dev. max | crease dev. mean | time s (median) | ILSA time / this | "
@@ -243,7 +243,7 @@ int main(int argc, char** argv) {
     std::vector<edge_descriptor> sharp;
     {
       auto map = input.add_property_map<edge_descriptor, bool>("e:sharp", false).first;
-      PMP::detect_sharp_edges(input, 180. - feature_angle, map);
+      PMP::detect_sharp_edges(input, feature_angle, map);
       for (auto e : edges(input))
         if (map[e]) sharp.push_back(e);
       input.remove_property_map(map);

@@ -24,12 +24,12 @@ RELAX2=${RELAX2:-"0.5"}
 MU=${MU:-"1"}
 WL=${WL:-"1"}
 WA=${WA:-"0.1"}
-ANGLE=${ANGLE:-"160"}
+ANGLE=${ANGLE:-"20"}   # ilsa_feature_angle: between face normals
 UNATTACHED=${UNATTACHED:-"1"}
 FLOOR=${FLOOR:-"default"} # "default": the library's (0.5, or the input's minimum q if higher)
 TOL=${TOL:-"3e-4"}
 REJECT=${REJECT:-"1"} # 1: drop moves that lower the star's mean quality (the default), 0: the paper's acceptance
-KINK=${KINK:-"default"} # "default": the library's (180 - feature angle); 180: the paper's rule (no kinks)
+KINK=${KINK:-"default"} # "default": the library's (the feature angle); 180: the paper's rule (no kinks)
 GAIN=${GAIN:-"1e-4"} # stop once an iteration raises the mean q by less; 0: every iteration
 
 printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %7s %6s %3s %7s %6s | %7s %7s %7s %7s %4s %9s %9s %6s %6s %5s %7s\n' \

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   try {
-    PMP::smooth_surface_mesh_ilsa(mesh, CGAL::parameters::number_of_iterations(10).ilsa_feature_angle(160.));
+    PMP::smooth_surface_mesh_ilsa(mesh, CGAL::parameters::number_of_iterations(10).ilsa_feature_angle(20.));
   } catch (const PMP::ILSA_error& e) {
     std::cerr << e.what() << "\n";
     return 1;

@@ -49,9 +49,9 @@ struct Options {
   std::string input = std::string(ILSA_DATA_DIR) + "/horse.ply";
   std::string output;
   unsigned int iterations = 20, relaxation_steps = 3;
-  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 160., fidelity_tolerance = 3e-4;
+  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 20., fidelity_tolerance = 3e-4;
   double minimum_gain = 1e-4;
-  std::optional<double> kink_angle;    // the library's default (180 - feature angle) when not given
+  std::optional<double> kink_angle;    // the library's default (the feature angle) when not given
   std::optional<double> quality_floor; // the library's default when not given
   bool fix_unattached = true, project = true, safety = true, monotone = false, reject_worsening = true, verbose = false;
   unsigned int worst = 0;                                                   // faces listed by --worst
@@ -69,10 +69,10 @@ const char* usage =
     "  --mu X                  penalty parameter, > 0 (default 1)\n"
     "  --wl X                  length weight, >= 0 (default 1)\n"
     "  --wa X                  area weight, >= 0 (default 0.1)\n"
-    "  --feature-angle DEG     dihedral feature angle, (0,180] (default 160)\n"
+    "  --feature-angle DEG     an edge is sharp when its face normals differ by more, [0,180) (default 20)\n"
     "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
     "  --kink-angle DEG        fix a crease vertex where the crease turns by more, [0,180],\n"
-    "                          180 disables (default: 180 - feature angle)\n"
+    "                          180 disables (default: the feature angle)\n"
     "  --no-project            do not project back onto the input surface\n"
     "  --no-safety             no inversion check after projection\n"
     "  --quality-floor X       safety check: no triangle pushed below this q, [0,1)\n"
@@ -178,7 +178,7 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
   PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
                               CGAL::parameters::ilsa_feature_angle(o.feature_angle)
                                   .ilsa_fix_unattached_candidates(o.fix_unattached)
-                                  .ilsa_crease_kink_angle(o.kink_angle.value_or(180. - o.feature_angle)));
+                                  .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle)));
   auto aspect_ratio = [](const Mesh& m, Mesh::Face_index f) {
     const auto h = halfedge(f, m);
     return PMP::triangle_aspect_ratio(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
@@ -226,7 +226,7 @@ int run(const Options& o) {
                       .ilsa_area_weight(o.wa)
                       .ilsa_feature_angle(o.feature_angle)
                       .ilsa_fix_unattached_candidates(o.fix_unattached)
-                      .ilsa_crease_kink_angle(o.kink_angle.value_or(180. - o.feature_angle))
+                      .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
                       .ilsa_minimum_quality_gain(o.minimum_gain)
                       .do_project(o.project)
                       .use_safety_constraints(o.safety)

@@ -1,8 +1,15 @@
 // Vertex classification (paper §3) on shapes with known answers, on
-// Surface_mesh and Polyhedron_3, and the user-constraint overrides.
+// Surface_mesh and Polyhedron_3, and the user-constraint overrides; the API's
+// conventions: the feature angle as CGAL's detect_sharp_edges() takes it,
+// relax_constraints, named parameters in any order, index maps, point types.
 #include "ilsa_test_utils.h"
 
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/graph_concepts.h>
+
+#include <boost/concept/assert.hpp>
 
 using namespace ilsa_test;
 using Type = PMP::ILSA_vertex_type;
@@ -113,9 +120,9 @@ void test_horse_counts() {
   assert(k.number_of_kink_vertices > k45.number_of_kink_vertices && k45.number_of_kink_vertices > 0);
   assert(k.number_of_ridge_vertices + k.number_of_kink_vertices == 1698);
   assert(k.number_of_corner_vertices == 2792 + k.number_of_kink_vertices);
-  // A smaller feature angle finds fewer features.
+  // A larger feature angle finds fewer features.
   const auto s120 =
-      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), CGAL::parameters::ilsa_feature_angle(120.));
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), CGAL::parameters::ilsa_feature_angle(60.));
   assert(s120.number_of_ridge_vertices + s120.number_of_corner_vertices <
          s.number_of_ridge_vertices + s.number_of_corner_vertices);
 }
@@ -149,7 +156,7 @@ template <class Mesh> void test_user_constraints() {
   std::map<vd, Type> t2;
   const auto s = PMP::classify_vertices_ilsa(
       m, boost::make_assoc_property_map(t2),
-      CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(constrained)));
+      CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(constrained)).relax_constraints(true));
   for (auto v : vertices(m)) {
     const Point& p = get(CGAL::vertex_point, m, v);
     const bool on_edge = p.x() == 1 && p.y() == 1;
@@ -163,7 +170,7 @@ template <class Mesh> void test_user_constraints() {
 void test_parameter_check() {
   const Surface_mesh m = to_mesh<Surface_mesh>(cube(2));
   std::map<Surface_mesh::Vertex_index, Type> t;
-  for (double angle : {0., -10., 181., std::nan("")}) {
+  for (double angle : {-10., 180., 181., std::nan("")}) {
     bool thrown = false;
     try {
       PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(t), CGAL::parameters::ilsa_feature_angle(angle));
@@ -183,6 +190,154 @@ void test_parameter_check() {
   }
 }
 
+// ilsa_feature_angle is the angle between face normals, as in detect_sharp_edges().
+template <class Mesh> void test_feature_angle_convention() {
+  const int n = 6;
+  const Mesh m = to_mesh<Mesh>(cube(n)); // faces meet at 90 degrees between normals along the cube's edges
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Type> t;
+  const auto below =
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(t), CGAL::parameters::ilsa_feature_angle(89.));
+  const auto above =
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(t), CGAL::parameters::ilsa_feature_angle(91.));
+  assert(below.number_of_ridge_vertices == std::size_t(12 * (n - 1)));
+  assert(above.number_of_ridge_vertices == 0);
+  auto sharp_count = [&](const auto& mesh, double angle) {
+    std::map<typename boost::graph_traits<std::decay_t<decltype(mesh)>>::edge_descriptor, bool> sharp;
+    PMP::detect_sharp_edges(mesh, angle, boost::make_assoc_property_map(sharp));
+    std::size_t count = 0;
+    for (const auto& e : sharp) count += e.second;
+    return count;
+  };
+  assert(sharp_count(m, 89.) == std::size_t(12 * n) && sharp_count(m, 91.) == 0);
+  // The crease edges of mesh_fidelity_ilsa are detect_sharp_edges()' at every angle.
+  const Mesh fandisk = read_mesh<Mesh>(data_file("fandisk.off"));
+  for (double angle : {10., 20., 35., 50., 80.}) {
+    const std::size_t ours =
+        PMP::mesh_fidelity_ilsa(fandisk, fandisk, CGAL::parameters::ilsa_feature_angle(angle)).number_of_sharp_edges;
+    std::cout << "fandisk, feature angle " << angle << ": " << ours << " sharp edges, detect_sharp_edges "
+              << sharp_count(fandisk, angle) << std::endl;
+    assert(ours > 0 && ours == sharp_count(fandisk, angle));
+  }
+}
+
+// relax_constraints(false), CGAL's default: the ends of constrained edges are fixed.
+void test_relax_constraints() {
+  const Surface_mesh m = to_mesh<Surface_mesh>(cube(4));
+  std::map<Surface_mesh::Edge_index, bool> constrained;
+  for (auto e : edges(m)) {
+    const Point &a = m.point(source(e, m)), &b = m.point(target(e, m));
+    constrained[e] = a.x() == 1 && a.y() == 1 && b.x() == 1 && b.y() == 1;
+  }
+  std::map<Surface_mesh::Vertex_index, Type> t;
+  const auto np = CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(constrained));
+  const auto held = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(t), np);
+  for (auto v : vertices(m))
+    if (m.point(v).x() == 1 && m.point(v).y() == 1) assert(t[v] == Type::Corner);
+  const auto relaxed = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(t), np.relax_constraints(true));
+  assert(held.number_of_ridge_vertices == 0 && relaxed.number_of_ridge_vertices == 3);
+  assert(held.number_of_corner_vertices == 5 && relaxed.number_of_corner_vertices == 2);
+}
+
+// Named parameters chain in any order, also for the quality functions.
+template <class Mesh> void test_named_parameters() {
+  Mesh m = read_mesh<Mesh>(data_file("sphere_low.off"));
+  using vd = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  std::map<vd, Point> flattened; // the sphere squashed: worse triangles
+  for (auto v : vertices(m)) {
+    const Point& p = get(CGAL::vertex_point, m, v);
+    flattened[v] = Point(p.x(), p.y(), 0.2 * p.z());
+  }
+  const auto vpm = boost::make_assoc_property_map(flattened);
+  const auto a = PMP::mesh_quality_ilsa(m, CGAL::parameters::vertex_point_map(vpm).ilsa_quality_threshold(0.9));
+  const auto b = PMP::mesh_quality_ilsa(m, CGAL::parameters::ilsa_quality_threshold(0.9).vertex_point_map(vpm));
+  const auto c =
+      PMP::mesh_quality_ilsa(faces(m), m, CGAL::parameters::ilsa_quality_threshold(0.9).vertex_point_map(vpm));
+  const auto plain = PMP::mesh_quality_ilsa(m);
+  assert(a.threshold == 0.9 && plain.threshold == 0.3);
+  assert(a.mean_aspect_ratio == b.mean_aspect_ratio && b.mean_aspect_ratio == c.mean_aspect_ratio);
+  assert(a.share_below_threshold == b.share_below_threshold && a.share_below_threshold > plain.share_below_threshold);
+  assert(a.mean_aspect_ratio < plain.mean_aspect_ratio);
+
+  Mesh x = m, y = m;
+  PMP::smooth_surface_mesh_ilsa(x,
+                                CGAL::parameters::number_of_iterations(3).ilsa_penalty_mu(0.5).relax_constraints(true));
+  PMP::smooth_surface_mesh_ilsa(y,
+                                CGAL::parameters::relax_constraints(true).ilsa_penalty_mu(0.5).number_of_iterations(3));
+  assert(points_of(x) == points_of(y) && !(points_of(x) == points_of(m)));
+
+  // mesh_fidelity_ilsa: random_seed makes the Hausdorff distance repeatable, and
+  // the caller's CGAL default generator is left as it was.
+  CGAL::get_default_random() = CGAL::Random(7);
+  const auto f1 = PMP::mesh_fidelity_ilsa(m, x, CGAL::parameters::random_seed(3).ilsa_feature_angle(30.));
+  const int drawn = CGAL::get_default_random().get_int(0, 1 << 30);
+  const auto f2 = PMP::mesh_fidelity_ilsa(m, x, CGAL::parameters::ilsa_feature_angle(30.).random_seed(3));
+  CGAL::get_default_random() = CGAL::Random(7);
+  assert(drawn == CGAL::get_default_random().get_int(0, 1 << 30));
+  assert(f1.hausdorff_distance > 0 && f1.hausdorff_distance == f2.hausdorff_distance);
+}
+
+// The requirements the reference manual lists, checked on the types it names,
+// and what follows from them: any integer index maps (in any order), a point
+// type of another kernel constructible from three doubles.
+void test_requirements() {
+  using Polyhedron_with_id = CGAL::Polyhedron_3<K, CGAL::Polyhedron_items_with_id_3>;
+  BOOST_CONCEPT_ASSERT((boost::concepts::VertexListGraph<Surface_mesh>));
+  BOOST_CONCEPT_ASSERT((boost::concepts::EdgeListGraph<Surface_mesh>));
+  BOOST_CONCEPT_ASSERT((CGAL::concepts::FaceListGraph<Surface_mesh>));
+  BOOST_CONCEPT_ASSERT((CGAL::concepts::HalfedgeGraph<Surface_mesh>));
+  BOOST_CONCEPT_ASSERT((boost::concepts::VertexListGraph<Polyhedron>));
+  BOOST_CONCEPT_ASSERT((boost::concepts::EdgeListGraph<Polyhedron>));
+  BOOST_CONCEPT_ASSERT((CGAL::concepts::FaceListGraph<Polyhedron>));
+  BOOST_CONCEPT_ASSERT((CGAL::concepts::HalfedgeGraph<Polyhedron>));
+
+  const Surface_mesh input = read_mesh<Surface_mesh>(data_file("fandisk.off"));
+  Surface_mesh expected = input;
+  PMP::smooth_surface_mesh_ilsa(expected, CGAL::parameters::number_of_iterations(3));
+
+  // Index maps numbering the elements backwards give the same result.
+  Polyhedron_with_id p = to_mesh<Polyhedron_with_id>(soup_of(input));
+  std::map<Polyhedron_with_id::Vertex_handle, int> vertex_ids;
+  std::map<Polyhedron_with_id::Facet_handle, long> face_ids;
+  for (auto v : vertices(p)) vertex_ids[v] = int(num_vertices(p) - 1 - vertex_ids.size());
+  for (auto f : faces(p)) face_ids[f] = long(num_faces(p) - 1 - face_ids.size());
+  PMP::smooth_surface_mesh_ilsa(p, CGAL::parameters::number_of_iterations(3)
+                                       .vertex_index_map(boost::make_assoc_property_map(vertex_ids))
+                                       .face_index_map(boost::make_assoc_property_map(face_ids)));
+  assert(points_of(p) == points_of(expected));
+
+  // An index map that is not one to one is rejected, the mesh untouched.
+  Polyhedron_with_id q = to_mesh<Polyhedron_with_id>(soup_of(input));
+  std::map<Polyhedron_with_id::Vertex_handle, int> twice;
+  for (auto v : vertices(q)) twice[v] = int(twice.size() / 2);
+  bool thrown = false;
+  try {
+    PMP::smooth_surface_mesh_ilsa(q, CGAL::parameters::vertex_index_map(boost::make_assoc_property_map(twice)));
+  } catch (const PMP::ILSA_error& e) {
+    thrown = std::string(e.what()).find("vertex_index_map") != std::string::npos;
+  }
+  assert(thrown && points_of(q) == points_of(input));
+
+  // Another kernel's point type: the computation runs in double either way.
+  using SC = CGAL::Simple_cartesian<double>;
+  CGAL::Surface_mesh<SC::Point_3> s; // the same vertices and faces, in the same order
+  for (auto v : vertices(input)) s.add_vertex(SC::Point_3(input.point(v).x(), input.point(v).y(), input.point(v).z()));
+  for (auto f : faces(input)) {
+    std::vector<CGAL::Surface_mesh<SC::Point_3>::Vertex_index> corners;
+    for (auto v : vertices_around_face(halfedge(f, input), input)) corners.emplace_back(std::size_t(v));
+    s.add_face(corners);
+  }
+  PMP::smooth_surface_mesh_ilsa(s, CGAL::parameters::number_of_iterations(3));
+  const auto e = points_of(expected);
+  std::size_t i = 0, same = 0;
+  for (auto v : vertices(s)) {
+    const auto& pt = s.point(v);
+    same += pt.x() == e[i].x() && pt.y() == e[i].y() && pt.z() == e[i].z();
+    ++i;
+  }
+  assert(same == e.size());
+  std::cout << "requirements: index maps, Simple_cartesian points: same result" << std::endl;
+}
+
 int main() {
   test_cube<Surface_mesh>();
   test_cube<Polyhedron>();
@@ -194,6 +349,12 @@ int main() {
   test_user_constraints<Surface_mesh>();
   test_user_constraints<Polyhedron>();
   test_parameter_check();
+  test_feature_angle_convention<Surface_mesh>();
+  test_feature_angle_convention<Polyhedron>();
+  test_relax_constraints();
+  test_named_parameters<Surface_mesh>();
+  test_named_parameters<Polyhedron>();
+  test_requirements();
   std::cout << "test_ilsa_classification: all checks passed\n";
   return 0;
 }

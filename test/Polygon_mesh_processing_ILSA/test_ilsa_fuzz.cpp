@@ -83,10 +83,10 @@ int main() {
     double relax1 = 0.05 + 0.95 * unit(rng), relax2 = 0.05 + 0.95 * unit(rng);
     double mu = std::pow(10., -3 + 5 * unit(rng));
     double wl = 2 * unit(rng), wa = 2 * unit(rng);
-    const double angle = 100 + 75 * unit(rng);
+    const double angle = 5 + 75 * unit(rng); // between face normals
     const bool fix = draw(0.5), monotone = draw(0.1);
-    const double kink_draw = unit(rng); // the default (180 - angle), off, or any
-    const double kink = kink_draw < 0.3 ? 180. - angle : kink_draw < 0.5 ? 180. : 180. * unit(rng);
+    const double kink_draw = unit(rng); // the default (the feature angle), off, or any
+    const double kink = kink_draw < 0.3 ? angle : kink_draw < 0.5 ? 180. : 180. * unit(rng);
     const double floor_draw = unit(rng); // the library's default: max(0.5, input minimum)
     bool default_floor = floor_draw < 0.3;
     double floor = floor_draw < 0.4 ? 0. : floor_draw < 0.5 ? 0.99 : 0.9 * unit(rng);
@@ -100,6 +100,7 @@ int main() {
     const bool project = !draw(0.1), safety = !draw(0.1);
     const bool use_range = draw(0.3), use_vertex_map = draw(0.2), use_edge_map = draw(0.25);
     const double edge_angle = 10 + 50 * unit(rng);
+    const bool relax = draw(0.5); // constrained edges slide (or stay fixed, CGAL's default)
     // The flip check alone.
     const bool only_flip_check = safety && draw(0.25);
     if (only_flip_check) {
@@ -137,6 +138,7 @@ int main() {
                   .ilsa_minimum_quality_gain(gain)
                   .do_project(project)
                   .use_safety_constraints(safety)
+                  .relax_constraints(relax)
                   .vertex_is_constrained_map(boost::make_assoc_property_map(constrained_vertices));
     // Sequential, and in parallel (with TBB), which must give the same points.
     Surface_mesh m = original, parallel = original;
@@ -165,6 +167,7 @@ int main() {
     const auto classification = CGAL::parameters::ilsa_feature_angle(angle)
                                     .ilsa_fix_unattached_candidates(fix)
                                     .ilsa_crease_kink_angle(kink)
+                                    .relax_constraints(relax)
                                     .vertex_is_constrained_map(boost::make_assoc_property_map(constrained_vertices));
     if (use_edge_map)
       PMP::classify_vertices_ilsa(
@@ -206,10 +209,11 @@ int main() {
                 << ", monotone " << monotone << ", reject worsening " << reject_worsening << ", kink " << kink
                 << ", tolerance " << tolerance << ", gain " << gain << ", project " << project << ", safety " << safety
                 << ", range " << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map
-                << "): flipped " << f.number_of_flipped_faces << ", distance " << f.max_vertex_distance
-                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
-                << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
-                << f.max_crease_deviation << ", parallel run identical " << same_in_parallel << std::endl;
+                << ", relax " << relax << "): flipped " << f.number_of_flipped_faces << ", distance "
+                << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
+                << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
+                << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
+                << ", parallel run identical " << same_in_parallel << std::endl;
     }
   }
   std::cout << "test_ilsa_fuzz: " << cases << " cases (" << flip_only << " with the flip check as the only guard), "

@@ -26,18 +26,22 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
-/// Default feature (dihedral) angle in degrees: the paper's 8π/9.
-constexpr double default_feature_angle = 160.;
+/// Default feature angle in degrees, CGAL's convention (the angle between the
+/// normals of the two faces of an edge, as in `detect_sharp_edges()`): 20, the
+/// paper's dihedral angle 8π/9 (160 degrees).
+constexpr double default_feature_angle = 20.;
 /// Default of the rule for ridge candidates with no sharp edge: fixed, as in the paper
 /// (user manual, "Feature Angle and Ridge Candidates Without Sharp Edges").
 constexpr bool default_fix_unattached_candidates = true;
+/// Default of `relax_constraints`: `false`, as in CGAL's smoothers.
+constexpr bool default_relax_constraints = false;
 
 /// Reads the classification parameters of `np` (paper §3; user constraints as documented) into
 /// `options`; the user's constraint maps are copied into the flat arrays
 /// `vertex_store` and `edge_store`, which `options` points to.
 template <class TriangleMesh, class NamedParameters>
 Classification_options read_classification_parameters(
-    const TriangleMesh& tm, const NamedParameters& np,
+    const TriangleMesh& tm, const Flat_mesh& m, const NamedParameters& np,
     const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
     const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list,
     std::vector<unsigned char>& vertex_store, std::vector<unsigned char>& edge_store) {
@@ -48,17 +52,18 @@ Classification_options read_classification_parameters(
   CGAL_USE(tm);
 
   Classification_options options;
-  options.feature_angle_degrees =
+  const double feature_angle =
       choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), default_feature_angle);
   options.fix_unattached_candidates = choose_parameter(get_parameter(np, internal_np::ilsa_fix_unattached_candidates),
                                                        default_fix_unattached_candidates);
-  if (!(options.feature_angle_degrees > 0 && options.feature_angle_degrees <= 180))
-    throw ILSA_error("ilsa_feature_angle must be in (0, 180] degrees, got " +
-                     std::to_string(options.feature_angle_degrees));
+  if (!(feature_angle >= 0 && feature_angle < 180))
+    throw ILSA_error("ilsa_feature_angle must be in [0, 180) degrees (the angle between face normals), got " +
+                     std::to_string(feature_angle));
+  // The classification works with the paper's dihedral angle θ_f.
+  options.feature_angle_degrees = 180. - feature_angle;
   // By default a crease vertex is a kink when the crease turns there by more
   // than the surface turns across a sharp edge (user manual, "Crease kinks").
-  options.kink_angle_degrees =
-      choose_parameter(get_parameter(np, internal_np::ilsa_crease_kink_angle), 180. - options.feature_angle_degrees);
+  options.kink_angle_degrees = choose_parameter(get_parameter(np, internal_np::ilsa_crease_kink_angle), feature_angle);
   if (!(options.kink_angle_degrees >= 0 && options.kink_angle_degrees <= 180))
     throw ILSA_error("ilsa_crease_kink_angle must be in [0, 180] degrees, got " +
                      std::to_string(options.kink_angle_degrees));
@@ -75,6 +80,11 @@ Classification_options read_classification_parameters(
     edge_store.resize(edge_list.size());
     for (std::size_t i = 0; i < edge_list.size(); ++i) edge_store[i] = get(ecm, edge_list[i]) ? 1 : 0;
     options.constrained_edges = &edge_store;
+    // CGAL's relax_constraints (user manual, "Constrained Edges"): unless it is
+    // true, the ends of the constrained edges do not move, as in CGAL's smoothers.
+    if (!choose_parameter(get_parameter(np, internal_np::relax_constraints), default_relax_constraints))
+      for (std::size_t i = 0; i < edge_list.size(); ++i)
+        if (edge_store[i]) vertex_store[m.edges[i][0]] = vertex_store[m.edges[i][1]] = 1;
   }
   return options;
 }
@@ -110,17 +120,19 @@ inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
  * edges) and `Smooth`. This is the classification `smooth_surface_mesh_ilsa()`
  * uses with the same named parameters.
  *
- * A vertex is a ridge candidate when the least-squares normal `x` of its star
- * (`A x = 1`, rows of `A` the unit normals of the incident faces) is longer
- * than `1 / cos((180° − θ_f) / 2)`; an edge between two candidates whose
- * dihedral angle is below `θ_f` is sharp; a candidate with two sharp edges is a
+ * With `θ` the feature angle (`ilsa_feature_angle`, the angle between face
+ * normals; the paper's dihedral angle is `θ_f = 180° − θ`), a vertex is a
+ * ridge candidate when the least-squares normal `x` of its star (`A x = 1`,
+ * rows of `A` the unit normals of the incident faces) is longer than
+ * `1 / cos(θ / 2)`; an edge between two candidates whose face normals make an
+ * angle larger than `θ` is sharp; a candidate with two sharp edges is a
  * ridge vertex, with one or more than two a corner, with none a corner or a
  * smooth vertex (`ilsa_fix_unattached_candidates`). A vertex with two sharp
  * edges where the crease turns by more than `ilsa_crease_kink_angle` is a
  * corner too (a kink). Isolated and non-manifold
  * vertices are corners.
  *
- * @tparam TriangleMesh a model of `FaceListGraph` and `EdgeListGraph`, with hashable descriptors
+ * @tparam TriangleMesh a model of `VertexListGraph`, `EdgeListGraph`, `FaceListGraph` and `HalfedgeGraph`
  * @tparam VertexTypeMap a model of `WritablePropertyMap` with `vertex_descriptor` as key and
  *         `ILSA_vertex_type` as value
  * @tparam NamedParameters a sequence of named parameters
@@ -135,25 +147,35 @@ inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
  *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `%Point_3` as value}
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_index_map, face_index_map}
+ *     \cgalParamDescription{as in `smooth_surface_mesh_ilsa()`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_feature_angle}
- *     \cgalParamDescription{the feature (dihedral) angle θ_f in degrees; an edge whose faces meet at a smaller dihedral
- * angle is sharp} \cgalParamType{`double`, in (0, 180]} \cgalParamDefault{160 (the paper's 8π/9)} \cgalParamNEnd
+ *     \cgalParamDescription{an edge is sharp when the normals of its two faces make an angle larger than this, in
+ * degrees (CGAL's convention, as in `detect_sharp_edges()`)} \cgalParamType{`double`, in [0, 180)}
+ * \cgalParamDefault{20 (the paper's dihedral θ_f = 8π/9)} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
  *     \cgalParamDescription{whether a ridge candidate with no sharp edge is a corner (the paper's rule) or a smooth
  * vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_crease_kink_angle}
  *     \cgalParamDescription{a vertex with two sharp edges where the crease turns by more than this angle (degrees) is a
  * corner, counted in `number_of_kink_vertices`; `180`: the paper's rule}
- *     \cgalParamType{`double`, in [0, 180]} \cgalParamDefault{`180 − ilsa_feature_angle`}
+ *     \cgalParamType{`double`, in [0, 180]} \cgalParamDefault{`ilsa_feature_angle`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_is_constrained_map}
  *     \cgalParamDescription{a property map telling which vertices are fixed; they are reported as corners (boundary
  * vertices stay boundary)} \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool`
  * as value} \cgalParamDefault{no vertex is constrained} \cgalParamNEnd \cgalParamNBegin{edge_is_constrained_map}
- *     \cgalParamDescription{when given, these edges are the sharp edges, replacing the detection: a vertex with two
- * constrained edges is a ridge vertex, with one or more than two a corner, with none a smooth vertex} \cgalParamType{a
- * model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value} \cgalParamDefault{sharp edges are
- * detected} \cgalParamNEnd \cgalNamedParamsEnd
+ *     \cgalParamDescription{when given, these edges are the sharp edges, replacing the detection: with
+ * `relax_constraints(true)`, a vertex with two constrained edges is a ridge vertex, with one or more than two a
+ * corner, with none a smooth vertex; by default every end of a constrained edge is a corner}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
+ *     \cgalParamDefault{sharp edges are detected}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{relax_constraints}
+ *     \cgalParamDescription{see `smooth_surface_mesh_ilsa()`} \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
  *
  * @return the number of vertices of each type (the other counters are zero)
  * @throws ILSA_error for a non-triangle face, a non-finite coordinate or an out-of-range parameter
@@ -168,12 +190,14 @@ ILSA_statistics classify_vertices_ilsa(const TriangleMesh& tm, VertexTypeMap ver
   const auto vpm =
       choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   std::vector<typename GT::vertex_descriptor> vertex_list;
-  internal::ILSA::Vertex_index_map<TriangleMesh> vertex_index;
+  internal::ILSA::Flat_indices<decltype(internal::ILSA::vertex_index_map_of(tm, np))> vertex_index{
+      internal::ILSA::vertex_index_map_of(tm, np), {}};
   std::vector<typename GT::edge_descriptor> edge_list;
-  const internal::ILSA::Flat_mesh m = internal::ILSA::build_flat_mesh(tm, vpm, vertex_list, vertex_index, edge_list);
+  const internal::ILSA::Flat_mesh m = internal::ILSA::build_flat_mesh(
+      tm, vpm, vertex_list, vertex_index, internal::ILSA::face_index_map_of(tm, np), edge_list);
 
   std::vector<unsigned char> constrained_vertices, constrained_edges;
-  const auto options = internal::ILSA::read_classification_parameters(tm, np, vertex_list, edge_list,
+  const auto options = internal::ILSA::read_classification_parameters(tm, m, np, vertex_list, edge_list,
                                                                       constrained_vertices, constrained_edges);
   const auto c = internal::ILSA::classify(m, options);
   for (std::size_t i = 0; i < vertex_list.size(); ++i) put(vertex_type_map, vertex_list[i], c.type[i]);

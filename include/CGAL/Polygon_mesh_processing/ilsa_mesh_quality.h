@@ -13,7 +13,9 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Random.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -136,15 +138,19 @@ struct ILSA_quality_summary {
 
 /// \ingroup PkgPMPILSARef
 /// Quality summary over the faces `face_range` of the triangle mesh `tm`.
-/// `threshold` is the aspect ratio under which a face counts as poor.
-/// Named parameter: `vertex_point_map`.
-template <class FaceRange, class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
-ILSA_quality_summary mesh_quality_ilsa(const FaceRange& face_range, const TriangleMesh& tm, double threshold = 0.3,
+/// Named parameters, in any order:
+/// - `vertex_point_map` (default `get_const_property_map(CGAL::vertex_point, tm)`);
+/// - `ilsa_quality_threshold` (default `0.3`): the aspect ratio under which a
+///   face counts as poor in `share_below_threshold`.
+template <class FaceRange, class TriangleMesh, class NamedParameters = parameters::Default_named_parameters,
+          typename = std::enable_if_t<!internal::ILSA::is_named_parameters<TriangleMesh>::value>>
+ILSA_quality_summary mesh_quality_ilsa(const FaceRange& face_range, const TriangleMesh& tm,
                                        const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   const auto vpm =
       choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const double threshold = choose_parameter(get_parameter(np, internal_np::ilsa_quality_threshold), 0.3);
 
   ILSA_quality_summary s;
   s.threshold = threshold;
@@ -184,11 +190,13 @@ ILSA_quality_summary mesh_quality_ilsa(const FaceRange& face_range, const Triang
 }
 
 /// \ingroup PkgPMPILSARef
-/// Quality summary over all faces of `tm`.
-template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
-ILSA_quality_summary mesh_quality_ilsa(const TriangleMesh& tm, double threshold = 0.3,
+/// Quality summary over all faces of `tm`; named parameters as in the range overload.
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters,
+          typename = std::enable_if_t<!internal::ILSA::is_named_parameters<TriangleMesh>::value &&
+                                      internal::ILSA::is_named_parameters<NamedParameters>::value>>
+ILSA_quality_summary mesh_quality_ilsa(const TriangleMesh& tm,
                                        const NamedParameters& np = parameters::default_values()) {
-  return mesh_quality_ilsa(faces(tm), tm, threshold, np);
+  return mesh_quality_ilsa(faces(tm), tm, np);
 }
 
 /// \ingroup PkgPMPILSARef
@@ -199,11 +207,11 @@ struct ILSA_fidelity_summary {
   std::size_t number_of_flipped_faces = 0; ///< faces whose normal turned by more than 90 degrees
   double max_vertex_distance = 0;          ///< largest distance of a smoothed vertex to the original surface
   double mean_vertex_distance = 0;
-  double hausdorff_distance = 0; ///< approximate symmetric Hausdorff distance (CGAL's, fixed seed)
+  double hausdorff_distance = 0; ///< approximate symmetric Hausdorff distance (CGAL's, `random_seed`)
   bool closed = false;
   double volume_change = 0;              ///< (V_smoothed - V_original) / V_original, closed meshes only
-  std::size_t number_of_sharp_edges = 0; ///< crease edges: sharp edges of the original (dihedral angle below the
-                                         ///< feature angle), or the constrained edges when a map is given
+  std::size_t number_of_sharp_edges = 0; ///< crease edges: sharp edges of the original (face normals more than the
+                                         ///< feature angle apart), or the constrained edges when a map is given
   /// Two-sided distance between the original's crease edges and the same edges of the smoothed mesh: every edge of
   /// either polyline is sampled (ends and seven inner points) and each sample is measured against the whole other
   /// polyline. A crease cut short (an original point far from the smoothed crease) and a crease bent away from the
@@ -216,18 +224,21 @@ struct ILSA_fidelity_summary {
 /// Compares `smoothed` with `original`, which must have the same vertices and
 /// faces in the same order (as `smooth_surface_mesh_ilsa()` leaves them).
 /// Named parameters:
-/// - `ilsa_feature_angle` (default 160): the dihedral angle in degrees below
-///   which an edge of `original` is sharp (the crease deviation compares these);
+/// - `ilsa_feature_angle` (default 20): an edge of `original` is sharp when the
+///   normals of its two faces make a larger angle, in degrees (CGAL's convention,
+///   as in `detect_sharp_edges()`); the crease deviation compares these edges;
 /// - `edge_is_constrained_map`: a map from the edges of `original` to `bool`;
 ///   when given, its edges are the crease edges instead of the sharp ones;
 /// - `random_seed` (default 0): the seed of the Hausdorff distance, which
-///   samples both meshes with CGAL's `approximate_symmetric_Hausdorff_distance()`.
+///   samples both meshes with CGAL's `approximate_symmetric_Hausdorff_distance()`
+///   (the calling thread's CGAL default generator is reseeded for it and then
+///   restored).
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const TriangleMesh& smoothed,
                                          const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const double feature_angle = choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), 160.);
+  const double feature_angle = choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), 20.);
   const unsigned int seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using P = K::Point_3;
@@ -270,15 +281,21 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   }
   r.mean_vertex_distance /= double(pb.size());
 
-  // In CGAL 5.5.1 random_seed does not reach every sampler (points inside a
-  // triangle and on edges come from the default generator), so that one is
-  // seeded too, and restored after: the distance is repeatable.
-  const CGAL::Random saved = CGAL::get_default_random();
-  CGAL::get_default_random() = CGAL::Random(seed);
-  const auto sampling = parameters::random_seed(seed).number_of_points_on_faces(2 * num_faces(a));
-  r.hausdorff_distance =
-      approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, sampling, sampling) * scale;
-  CGAL::get_default_random() = saved;
+  // CGAL's approximate symmetric Hausdorff distance. In CGAL 5.5.1 random_seed
+  // does not reach every sampler (points on edges come from CGAL's default
+  // generator), so that generator is seeded too for a repeatable distance. It
+  // is thread-local in CGAL (CGAL/Random.h), and the guard restores its state
+  // on every way out: the caller's generator is left as it was.
+  {
+    struct Default_random_guard {
+      CGAL::Random saved = CGAL::get_default_random();
+      ~Default_random_guard() { CGAL::get_default_random() = saved; }
+    } guard;
+    CGAL::get_default_random() = CGAL::Random(seed);
+    const auto sampling = parameters::random_seed(seed).number_of_points_on_faces(2 * num_faces(a));
+    r.hausdorff_distance =
+        approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, sampling, sampling) * scale;
+  }
 
   r.closed = CGAL::is_closed(a);
   if (r.closed) {
@@ -290,7 +307,7 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   // (not the smoothed mesh's own sharp edges: an edge near the threshold could
   // change side), compared both ways.
   const double pi = 3.14159265358979323846;
-  const double sharp_cosine = std::cos(pi - feature_angle * pi / 180.);
+  const double sharp_cosine = std::cos(pi - (180. - feature_angle) * pi / 180.);
   using Segments = std::vector<K::Segment_3>;
   Segments original_crease, smoothed_crease;
   // The user's crease edges, as pairs of vertices of `a`.

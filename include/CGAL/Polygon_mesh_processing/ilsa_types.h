@@ -4,12 +4,23 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_ILSA_TYPES_H
 #define CGAL_POLYGON_MESH_PROCESSING_ILSA_TYPES_H
 
+#include <CGAL/Named_function_parameters.h>
+
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+// Tells the overloads `f(tm, np)` and `f(range, tm, np)` apart, also when `np` is a non-const lvalue.
+template <class T> struct is_named_parameters : std::false_type {};
+template <class T, class Tag, class Base>
+struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std::true_type {};
+} // namespace ILSA
+} // namespace internal
 
 /// \ingroup PkgPMPILSARef
 /// The four vertex types of ILSA (Chen et al. 2007, Section 3).

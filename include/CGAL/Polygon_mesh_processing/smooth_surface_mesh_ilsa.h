@@ -36,15 +36,6 @@
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
-namespace internal {
-namespace ILSA {
-// Keeps `smooth_surface_mesh_ilsa(tm, np)` unambiguous when `np` is a non-const lvalue.
-template <class T> struct is_named_parameters : std::false_type {};
-template <class T, class Tag, class Base>
-struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std::true_type {};
-} // namespace ILSA
-} // namespace internal
-
 /*!
  * \ingroup PkgPMPILSARef
  * smooths a triangle mesh with ILSA, the improved Laplacian smoothing approach
@@ -63,8 +54,9 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *         `CGAL::Parallel_tag` (needs TBB) or `CGAL::Parallel_if_available_tag`. The result is
  *         bit-identical whatever the tag and the number of threads.
  * @tparam VertexRange a model of `Range` of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
- * @tparam TriangleMesh a model of `FaceListGraph`, `EdgeListGraph` and `MutableFaceGraph`
- *         whose descriptors are hashable (`Surface_mesh`, `Polyhedron_3`, OpenMesh meshes, ...)
+ * @tparam TriangleMesh a model of `VertexListGraph`, `EdgeListGraph`, `FaceListGraph` and `HalfedgeGraph`
+ *         (`Surface_mesh`, `Polyhedron_3`, OpenMesh meshes through CGAL's adapters, ...); the connectivity
+ *         is not changed, so `MutableFaceGraph` is not needed
  * @tparam NamedParameters a sequence of named parameters
  *
  * @param vertices the vertices that may move; all others are fixed
@@ -77,13 +69,18 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamType{a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and `%Point_3` as value}
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{geom_traits}
- *     \cgalParamDescription{an instance of a geometric traits class}
- *     \cgalParamType{a model of `Kernel`}
- *     \cgalParamDefault{a kernel deduced from the point type, using `CGAL::Kernel_traits`}
- *     \cgalParamExtra{Accepted for compatibility with CGAL's smoothers and not used otherwise: the computation
- *                     runs in `double` on coordinates relative to the bounding box; points are read with
- *                     `CGAL::to_double()` and written with the point type's `(x, y, z)` constructor.}
+ *   \cgalParamNBegin{vertex_index_map}
+ *     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and
+ * `num_vertices(tm) - 1`} \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and
+ * an integer type as value} \cgalParamDefault{an automatically indexed internal map}
+ *     \cgalParamExtra{The result does not depend on the numbering; a map that is not one to one is rejected with
+ * `ILSA_error`. Needed only for a mesh without an internal vertex index.}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{face_index_map}
+ *     \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and
+ * `num_faces(tm) - 1`} \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key and
+ * an integer type as value} \cgalParamDefault{an automatically indexed internal map}
+ *     \cgalParamExtra{As for `vertex_index_map`.}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_iterations}
  *     \cgalParamDescription{the largest number of global iterations (the paper's max_global_iter_num); see
@@ -126,9 +123,11 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamDefault{`0.1`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_feature_angle}
- *     \cgalParamDescription{the feature (dihedral) angle θ_f in degrees, see `classify_vertices_ilsa()`}
- *     \cgalParamType{`double`, in (0, 180]}
- *     \cgalParamDefault{`160` (the paper's 8π/9)}
+ *     \cgalParamDescription{an edge is sharp when the normals of its two faces make an angle larger than this, in
+ * degrees: CGAL's convention, the angle `detect_sharp_edges()` takes. The paper states it as the dihedral angle
+ * θ_f = 180° − this angle. See `classify_vertices_ilsa()`}
+ *     \cgalParamType{`double`, in [0, 180)}
+ *     \cgalParamDefault{`20` (the paper's θ_f = 8π/9, i.e. 160°)}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
  *     \cgalParamDescription{whether a ridge candidate with no sharp edge is fixed as a corner (the paper's rule) or
@@ -139,8 +138,8 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  * crease turns by 0): sliding it would cut off the tip of the crease. Not in the paper: `180` restores the paper's
  * rule, under which such a vertex is a ridge vertex}
  *     \cgalParamType{`double`, in [0, 180]}
- *     \cgalParamDefault{`180 − ilsa_feature_angle` (20: a crease vertex is a kink when the crease turns by more than
- * the surface turns across a sharp edge)}
+ *     \cgalParamDefault{`ilsa_feature_angle` (20: a crease vertex is a kink when the crease turns by more than the
+ * surface must turn across an edge to make it sharp)}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_is_constrained_map}
  *     \cgalParamDescription{a property map telling which vertices are fixed}
@@ -148,12 +147,25 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  *     \cgalParamDefault{no vertex is constrained}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{edge_is_constrained_map}
- *     \cgalParamDescription{when given, these edges are the sharp edges instead of the detected ones: a vertex with two
- * constrained edges slides along them, one with one or more than two is fixed} \cgalParamType{a model of
- * `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value} \cgalParamDefault{sharp edges are detected
- * with `ilsa_feature_angle`} \cgalParamNEnd \cgalParamNBegin{do_project} \cgalParamDescription{whether moved vertices
- * are projected back onto the input surface (ridge vertices onto their crease); without projection they stay where the
- * displacement puts them, off the surface} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
+ *     \cgalParamDescription{when given, these edges are the crease edges instead of the detected sharp edges: with
+ * `relax_constraints(true)`, a vertex with two constrained edges slides along them and one with one or more than two
+ * is fixed; by default, every end of a constrained edge is fixed}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
+ *     \cgalParamDefault{sharp edges are detected with `ilsa_feature_angle`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{relax_constraints}
+ *     \cgalParamDescription{whether the ends of the edges of `edge_is_constrained_map` may move along the constrained
+ * polylines, as in CGAL's `tangential_relaxation()` (boundary vertices stay fixed in any case). Without an
+ * `edge_is_constrained_map`, vertices on detected creases always slide along them, as in the paper}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`, CGAL's default: a constrained edge does not move}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{do_project}
+ *     \cgalParamDescription{whether moved vertices are projected back onto the input surface (ridge vertices onto
+ * their crease); without projection they stay where the displacement puts them, off the surface}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{use_safety_constraints}
  *     \cgalParamDescription{whether every move is checked after projection: a move that would reverse a triangle (with
  * respect to the input surface) or collapse it is halved up to three times, then dropped for the iteration. With
@@ -182,13 +194,11 @@ struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base>> : std:
  * surface farther than this distance from the input surface where it was not already: from the input position of the
  * vertex or of a neighbour to the smoothed faces around it (a bump or a crease bend cut off), or from the centroid and
  * edge midpoints of the faces around the vertex to the input faces around them (a chord over a fold). The same bound
- * holds along the feature lines, both ways: the input's sharp edges (or constrained edges) and the edges whose dihedral
- * angle is below `ilsa_feature_angle` may not move farther than it from their input position, nor their input points
- * end farther than it from them. Relative to the bounding-box diagonal. `std::numeric_limits<double>::infinity()`
- * disables this part of the check (the paper has no such bound)} \cgalParamType{`double`, positive}
- *     \cgalParamDefault{`3e-4`}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{verbose}
+ * holds along the feature lines, both ways: the input's sharp edges (or constrained edges) and the edges whose face
+ * normals are more than `ilsa_feature_angle` apart may not move farther than it from their input position, nor their
+ * input points end farther than it from them. Relative to the bounding-box diagonal.
+ * `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no such bound)}
+ * \cgalParamType{`double`, positive} \cgalParamDefault{`3e-4`} \cgalParamNEnd \cgalParamNBegin{verbose}
  *     \cgalParamDescription{whether to print the vertex types and what each iteration did to `std::cerr`}
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`false`}
@@ -263,17 +273,18 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
 
   // Frozen flat copy of the input (T_ori), user constraints, vertex range.
   std::vector<typename GT::vertex_descriptor> vertex_list;
-  ilsa::Vertex_index_map<TriangleMesh> vertex_index;
+  ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, np))> vertex_index{ilsa::vertex_index_map_of(tm, np), {}};
   std::vector<typename GT::edge_descriptor> edge_list;
-  const ilsa::Flat_mesh original = ilsa::build_flat_mesh(tm, vpm, vertex_list, vertex_index, edge_list);
+  const ilsa::Flat_mesh original =
+      ilsa::build_flat_mesh(tm, vpm, vertex_list, vertex_index, ilsa::face_index_map_of(tm, np), edge_list);
   std::vector<unsigned char> constrained_vertices, constrained_edges;
-  const auto options =
-      ilsa::read_classification_parameters(tm, np, vertex_list, edge_list, constrained_vertices, constrained_edges);
+  const auto options = ilsa::read_classification_parameters(tm, original, np, vertex_list, edge_list,
+                                                            constrained_vertices, constrained_edges);
   std::vector<unsigned char> movable(original.number_of_vertices(), 0);
   for (auto v : vertices) {
-    const auto found = vertex_index.find(v);
-    require(found != vertex_index.end(), "a vertex of the range is not a vertex of the mesh");
-    movable[found->second] = 1;
+    const std::size_t found = vertex_index.find(v, vertex_list);
+    require(found != ilsa::npos, "a vertex of the range is not a vertex of the mesh");
+    movable[found] = 1;
   }
 
   // Classify vertices on T_ori (paper §3).

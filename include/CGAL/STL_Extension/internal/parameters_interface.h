@@ -21,7 +21,8 @@
 #elif defined(__GNUC__) || defined(__clang__)
 #include_next <CGAL/STL_Extension/internal/parameters_interface.h>
 #else
-#error "Define CGAL_ILSA_CGAL_PARAMETERS_INTERFACE as the quoted path of CGAL's CGAL/STL_Extension/internal/parameters_interface.h (the CMake target CGAL::Polygon_mesh_processing_ILSA does)."
+#error                                                                                                                 \
+    "Define CGAL_ILSA_CGAL_PARAMETERS_INTERFACE as the quoted path of CGAL's CGAL/STL_Extension/internal/parameters_interface.h (the CMake target CGAL::Polygon_mesh_processing_ILSA does)."
 #endif
 
 // ILSA parameters (see smooth_surface_mesh_ilsa.h for their meaning)
@@ -39,6 +40,7 @@ CGAL_add_named_parameter(ilsa_quality_floor_t, ilsa_quality_floor, ilsa_quality_
 CGAL_add_named_parameter(ilsa_fidelity_tolerance_t, ilsa_fidelity_tolerance, ilsa_fidelity_tolerance)
 CGAL_add_named_parameter(ilsa_quality_monotone_t, ilsa_quality_monotone, ilsa_quality_monotone)
 CGAL_add_named_parameter(ilsa_reject_worsening_moves_t, ilsa_reject_worsening_moves, ilsa_reject_worsening_moves)
+CGAL_add_named_parameter(ilsa_quality_threshold_t, ilsa_quality_threshold, ilsa_quality_threshold)
 // clang-format on
 
 // Checked by the package's public headers: if CGAL's own list was picked up

@@ -14,6 +14,8 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
 
 #include <Eigen/Dense>
@@ -24,7 +26,6 @@
 #include <cstddef>
 #include <limits>
 #include <string>
-#include <boost/unordered_map.hpp>
 #include <vector>
 
 namespace CGAL {
@@ -120,18 +121,69 @@ inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<std::size
   return l > 0 ? Vec3(n / l) : Vec3::Zero();
 }
 
-template <class TriangleMesh>
-using Vertex_index_map =
-    boost::unordered_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, std::size_t>;
+/// Flat index of each vertex (or face) descriptor, through an index map (the
+/// user's `vertex_index_map`, or CGAL's `get_initialized_vertex_index_map()`).
+/// Flat indices follow the order of `vertices(tm)` whatever the map's order, so
+/// the result does not depend on it.
+template <class VertexIndexMap> struct Flat_indices {
+  VertexIndexMap map;
+  std::vector<std::size_t> flat; // flat index of each map index
+
+  /// The flat index of `v`, or `npos` if `v` is not a vertex of the mesh the map was built for
+  /// (`vertex_list` lists the mesh's descriptors by flat index).
+  template <class Key, class Descriptor>
+  std::size_t find(const Key& v, const std::vector<Descriptor>& vertex_list) const {
+    const auto i = get(map, v);
+    if (!(std::size_t(i) < flat.size())) return npos; // a negative index wraps round
+    const std::size_t f = flat[std::size_t(i)];
+    return f != npos && vertex_list[f] == v ? f : npos;
+  }
+  template <class Descriptor> std::size_t operator()(const Descriptor& v) const {
+    return flat[std::size_t(get(map, v))];
+  }
+};
+
+/// The user's `vertex_index_map` (checked by `number_in_order()`, which rejects
+/// a map that is not one to one with `ILSA_error`), or CGAL's initialized one.
+template <class TriangleMesh, class NamedParameters>
+auto vertex_index_map_of(TriangleMesh& tm, const NamedParameters& np) {
+  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::vertex_index_t>::value)
+    return get_initialized_vertex_index_map(tm);
+  else
+    return parameters::get_parameter(np, internal_np::vertex_index);
+}
+/// The same for `face_index_map`.
+template <class TriangleMesh, class NamedParameters>
+auto face_index_map_of(TriangleMesh& tm, const NamedParameters& np) {
+  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::face_index_t>::value)
+    return get_initialized_face_index_map(tm);
+  else
+    return parameters::get_parameter(np, internal_np::face_index);
+}
+
+/// Fills `indices.flat` for the descriptors of `list` (in flat order); throws `ILSA_error`
+/// unless `indices.map` maps them one to one onto [0, list.size()).
+template <class Indices, class Descriptor>
+void number_in_order(Indices& indices, const std::vector<Descriptor>& list, const char* what) {
+  indices.flat.assign(list.size(), npos);
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const auto i = get(indices.map, list[k]);
+    if (!(std::size_t(i) < list.size()) || indices.flat[std::size_t(i)] != npos)
+      throw ILSA_error(std::string(what) + " does not number the " + std::to_string(list.size()) +
+                       " elements one to one from 0");
+    indices.flat[std::size_t(i)] = k;
+  }
+}
 
 /// Builds the flat copy of `tm`. `vertex_list` receives the vertex descriptors in
-/// index order, `vertex_index` the inverse map, `edge_list` the edge descriptors.
-/// Throws `ILSA_error` for a non-triangle face or a non-finite coordinate; `tm`
-/// is only read.
-template <class TriangleMesh, class VertexPointMap>
+/// index order, `vertex_index` the flat numbering of the vertices (its `map` must
+/// be set), `edge_list` the edge descriptors. `face_index_map` numbers the faces.
+/// Throws `ILSA_error` for a non-triangle face, a non-finite coordinate or an
+/// index map that is not one to one; `tm` is only read.
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
                           std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
-                          Vertex_index_map<TriangleMesh>& vertex_index,
+                          Flat_indices<VertexIndexMap>& vertex_index, const FaceIndexMap& face_index_map,
                           std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list) {
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
@@ -140,14 +192,12 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   Flat_mesh m;
   vertex_list.assign(vertices(tm).begin(), vertices(tm).end());
   const std::size_t nv = vertex_list.size();
+  number_in_order(vertex_index, vertex_list, "vertex_index_map");
 
-  vertex_index.clear();
-  vertex_index.reserve(nv);
   std::vector<Vec3> raw(nv);
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 hi = -lo;
   for (std::size_t i = 0; i < nv; ++i) {
-    vertex_index.emplace(vertex_list[i], i);
     const auto& p = get(vpm, vertex_list[i]);
     raw[i] = Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     if (!raw[i].allFinite())
@@ -163,20 +213,20 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   m.points.resize(nv);
   for (std::size_t i = 0; i < nv; ++i) m.points[i] = (raw[i] - m.center) / m.scale;
 
-  boost::unordered_map<face_descriptor, std::size_t> face_index;
-  face_index.reserve(num_faces(tm));
+  const std::vector<face_descriptor> face_list(faces(tm).begin(), faces(tm).end());
+  Flat_indices<FaceIndexMap> face_index{face_index_map, {}};
+  number_in_order(face_index, face_list, "face_index_map");
   std::vector<std::pair<std::size_t, std::size_t>> incidences;
-  for (face_descriptor f : faces(tm)) {
+  for (face_descriptor f : face_list) {
     std::array<std::size_t, 3> t{};
     std::size_t k = 0;
     for (vertex_descriptor v : vertices_around_face(halfedge(f, tm), tm)) {
-      if (k < 3) t[k] = vertex_index.at(v);
+      if (k < 3) t[k] = vertex_index(v);
       ++k;
     }
     if (k != 3)
       throw ILSA_error("face " + std::to_string(m.faces.size()) + " has " + std::to_string(k) +
                        " vertices; only triangle meshes are supported (triangulate first)");
-    face_index.emplace(f, m.faces.size());
     for (std::size_t c = 0; c < 3; ++c) incidences.emplace_back(t[c], m.faces.size());
     m.faces.push_back(t);
   }
@@ -194,11 +244,11 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   records.reserve(graph_edges.size());
   for (std::size_t k = 0; k < graph_edges.size(); ++k) {
     auto h = halfedge(graph_edges[k], tm);
-    if (vertex_index.at(source(h, tm)) > vertex_index.at(target(h, tm))) h = opposite(h, tm);
+    if (vertex_index(source(h, tm)) > vertex_index(target(h, tm))) h = opposite(h, tm);
     const face_descriptor f0 = face(h, tm), f1 = face(opposite(h, tm), tm);
-    records.push_back({vertex_index.at(source(h, tm)), vertex_index.at(target(h, tm)),
-                       f0 == GT::null_face() ? npos : face_index.at(f0),
-                       f1 == GT::null_face() ? npos : face_index.at(f1), k});
+    records.push_back({vertex_index(source(h, tm)), vertex_index(target(h, tm)),
+                       f0 == GT::null_face() ? npos : face_index(f0), f1 == GT::null_face() ? npos : face_index(f1),
+                       k});
   }
   std::sort(records.begin(), records.end(), [](const Edge_record& x, const Edge_record& y) {
     return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
