@@ -104,9 +104,9 @@ template <class Mesh> void test_components_and_self_intersection() {
 template <class Mesh> void test_degenerate_faces() {
   // A grid whose vertex (2,2) sits exactly on the segment of its neighbours
   // (1,1)-(3,3): two zero-area faces. And a needle: a vertex 1e-9 off a segment.
-  const int n = 6;
+  constexpr int n = 6;
   Soup s = grid(n);
-  auto id = [n](int i, int j) { return std::size_t(j * (n + 1) + i); };
+  auto id = [](int i, int j) { return std::size_t(j * (n + 1) + i); };
   s.points[id(2, 2)] = CGAL::midpoint(s.points[id(1, 1)], s.points[id(3, 3)]);
   const Point needle_base = CGAL::midpoint(s.points[id(3, 4)], s.points[id(4, 5)]);
   s.points[id(4, 4)] = Point(needle_base.x() + 1e-9, needle_base.y(), 0);
