@@ -47,8 +47,8 @@ using edge_descriptor = boost::graph_traits<Mesh>::edge_descriptor;
 
 namespace {
 
-// Dihedral feature angle shared by every method: ILSA's default (160 degrees),
-// i.e. a normal deviation of 20 degrees for detect_sharp_edges.
+// Feature angle shared by every method, between face normals: ILSA's default
+// (the paper's dihedral 160 degrees), passed to detect_sharp_edges() for the peers.
 const double feature_angle = 20.; // between face normals, as detect_sharp_edges() takes it
 
 struct Method {
