@@ -143,22 +143,23 @@ template <class VertexIndexMap> struct Flat_indices {
   }
 };
 
-/// The user's `vertex_index_map` (checked by `number_in_order()`, which rejects
-/// a map that is not one to one with `ILSA_error`), or CGAL's initialized one.
+/// The user's index map for `Tag` (`vertex_index_map` or `face_index_map`;
+/// `number_in_order()` rejects a map that is not one to one with `ILSA_error`),
+/// or `make_default()`, CGAL's initialized one.
+template <class Tag, class NamedParameters, class MakeDefault>
+auto index_map_of(const NamedParameters& np, MakeDefault make_default) {
+  if constexpr (parameters::is_default_parameter<NamedParameters, Tag>::value)
+    return make_default();
+  else
+    return parameters::get_parameter(np, Tag{});
+}
 template <class TriangleMesh, class NamedParameters>
 auto vertex_index_map_of(TriangleMesh& tm, const NamedParameters& np) {
-  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::vertex_index_t>::value)
-    return get_initialized_vertex_index_map(tm);
-  else
-    return parameters::get_parameter(np, internal_np::vertex_index);
+  return index_map_of<internal_np::vertex_index_t>(np, [&] { return get_initialized_vertex_index_map(tm); });
 }
-/// The same for `face_index_map`.
 template <class TriangleMesh, class NamedParameters>
 auto face_index_map_of(TriangleMesh& tm, const NamedParameters& np) {
-  if constexpr (parameters::is_default_parameter<NamedParameters, internal_np::face_index_t>::value)
-    return get_initialized_face_index_map(tm);
-  else
-    return parameters::get_parameter(np, internal_np::face_index);
+  return index_map_of<internal_np::face_index_t>(np, [&] { return get_initialized_face_index_map(tm); });
 }
 
 /// Fills `indices.flat` for the descriptors of `list` (in flat order); throws `ILSA_error`
