@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/graph_concepts.h>
 
 #include <boost/concept/assert.hpp>
@@ -316,6 +317,17 @@ void test_requirements() {
     thrown = std::string(e.what()).find("vertex_index_map") != std::string::npos;
   }
   assert(thrown && points_of(q) == points_of(input));
+
+  // A Surface_mesh with a removed face (indices with a gap until
+  // collect_garbage()) gives the result of the collected mesh.
+  Surface_mesh with_gap = input;
+  CGAL::Euler::remove_face(halfedge(*std::prev(faces(with_gap).end()), with_gap), with_gap);
+  assert(with_gap.has_garbage());
+  Surface_mesh collected = with_gap;
+  collected.collect_garbage();
+  PMP::smooth_surface_mesh_ilsa(with_gap, CGAL::parameters::number_of_iterations(3));
+  PMP::smooth_surface_mesh_ilsa(collected, CGAL::parameters::number_of_iterations(3));
+  assert(points_of(with_gap) == points_of(collected) && !(points_of(collected) == points_of(input)));
 
   // Another kernel's point type: the computation runs in double either way.
   using SC = CGAL::Simple_cartesian<double>;

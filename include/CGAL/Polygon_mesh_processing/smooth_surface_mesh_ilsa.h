@@ -72,14 +72,15 @@ namespace Polygon_mesh_processing {
  *   \cgalParamNBegin{vertex_index_map}
  *     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and
  * `num_vertices(tm) - 1`} \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and
- * an integer type as value} \cgalParamDefault{an automatically indexed internal map}
+ * an integer type as value} \cgalParamDefault{the vertices numbered in the order of `vertices(tm)` in a dynamic
+ * property map (so a `Surface_mesh` with removed elements needs no `collect_garbage()`)}
  *     \cgalParamExtra{The result does not depend on the numbering; a map that is not one to one is rejected with
- * `ILSA_error`. Needed only for a mesh without an internal vertex index.}
+ * `ILSA_error`.}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{face_index_map}
  *     \cgalParamDescription{a property map associating to each face of `tm` a unique index between `0` and
  * `num_faces(tm) - 1`} \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key and
- * an integer type as value} \cgalParamDefault{an automatically indexed internal map}
+ * an integer type as value} \cgalParamDefault{the faces numbered in the order of `faces(tm)`}
  *     \cgalParamExtra{As for `vertex_index_map`.}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_iterations}

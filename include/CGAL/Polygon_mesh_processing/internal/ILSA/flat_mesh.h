@@ -15,6 +15,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
 
@@ -145,7 +146,7 @@ template <class VertexIndexMap> struct Flat_indices {
 
 /// The user's index map for `Tag` (`vertex_index_map` or `face_index_map`;
 /// `number_in_order()` rejects a map that is not one to one with `ILSA_error`),
-/// or `make_default()`, CGAL's initialized one.
+/// or `make_default()`.
 template <class Tag, class NamedParameters, class MakeDefault>
 auto index_map_of(const NamedParameters& np, MakeDefault make_default) {
   if constexpr (parameters::is_default_parameter<NamedParameters, Tag>::value)
@@ -153,13 +154,23 @@ auto index_map_of(const NamedParameters& np, MakeDefault make_default) {
   else
     return parameters::get_parameter(np, Tag{});
 }
-template <class TriangleMesh, class NamedParameters>
-auto vertex_index_map_of(TriangleMesh& tm, const NamedParameters& np) {
-  return index_map_of<internal_np::vertex_index_t>(np, [&] { return get_initialized_vertex_index_map(tm); });
+/// Without a user map: a dynamic property map numbering the elements in
+/// iteration order, valid also for a `Surface_mesh` with removed elements
+/// (whose internal indices have gaps until `collect_garbage()`).
+template <class Map, class Range> Map number_elements(Map map, const Range& range) {
+  std::size_t i = 0;
+  for (const auto& x : range) put(map, x, i++);
+  return map;
 }
 template <class TriangleMesh, class NamedParameters>
-auto face_index_map_of(TriangleMesh& tm, const NamedParameters& np) {
-  return index_map_of<internal_np::face_index_t>(np, [&] { return get_initialized_face_index_map(tm); });
+auto vertex_index_map_of(const TriangleMesh& tm, const NamedParameters& np) {
+  return index_map_of<internal_np::vertex_index_t>(
+      np, [&] { return number_elements(get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm), vertices(tm)); });
+}
+template <class TriangleMesh, class NamedParameters>
+auto face_index_map_of(const TriangleMesh& tm, const NamedParameters& np) {
+  return index_map_of<internal_np::face_index_t>(
+      np, [&] { return number_elements(get(CGAL::dynamic_face_property_t<std::size_t>(), tm), faces(tm)); });
 }
 
 /// Fills `indices.flat` for the descriptors of `list` (in flat order); throws `ILSA_error`
