@@ -4,6 +4,8 @@
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "ilsa_example_data.h"
+
 #include <iostream>
 #include <string>
 
@@ -12,7 +14,7 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 
 int main(int argc, char** argv) {
-  const std::string input = argc > 1 ? argv[1] : std::string(ILSA_DATA_DIR) + "/fandisk.off";
+  const std::string input = argc > 1 ? argv[1] : ilsa_data_file("fandisk.off");
   const std::string output = argc > 2 ? argv[2] : "fandisk_smoothed.off";
 
   Mesh mesh;

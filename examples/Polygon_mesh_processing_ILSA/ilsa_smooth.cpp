@@ -14,6 +14,8 @@
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "ilsa_example_data.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -46,7 +48,7 @@ using Mesh = CGAL::Surface_mesh<K::Point_3>;
 namespace {
 
 struct Options {
-  std::string input = std::string(ILSA_DATA_DIR) + "/horse.ply";
+  std::string input = ilsa_data_file("horse.ply");
   std::string output;
   unsigned int iterations = 20, relaxation_steps = 3;
   double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 20., fidelity_tolerance = 3e-4;
