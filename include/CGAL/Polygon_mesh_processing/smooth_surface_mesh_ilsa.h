@@ -28,6 +28,8 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <boost/unordered_map.hpp>
+
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -56,7 +58,8 @@ namespace Polygon_mesh_processing {
  * @tparam VertexRange a model of `Range` of `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
  * @tparam TriangleMesh a model of `VertexListGraph`, `EdgeListGraph`, `FaceListGraph` and `HalfedgeGraph`
  *         (`Surface_mesh`, `Polyhedron_3`, OpenMesh meshes through CGAL's adapters, ...); the connectivity
- *         is not changed, so `MutableFaceGraph` is not needed
+ *         is not changed, so `MutableFaceGraph` is not needed; its vertex descriptors must be hashable with
+ *         `boost::hash` (to check the vertex range; true of all of these)
  * @tparam NamedParameters a sequence of named parameters
  *
  * @param vertices the vertices that may move; all others are fixed
@@ -282,10 +285,15 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const auto options = ilsa::read_classification_parameters(tm, original, np, vertex_list, edge_list,
                                                             constrained_vertices, constrained_edges);
   std::vector<unsigned char> movable(original.number_of_vertices(), 0);
+  // The range is checked against the mesh's own descriptors: an index map
+  // cannot be read for a descriptor that is not the mesh's.
+  boost::unordered_map<typename GT::vertex_descriptor, std::size_t> flat_of;
+  flat_of.reserve(vertex_list.size());
+  for (std::size_t i = 0; i < vertex_list.size(); ++i) flat_of.emplace(vertex_list[i], i);
   for (auto v : vertices) {
-    const std::size_t found = vertex_index.find(v, vertex_list);
-    require(found != ilsa::npos, "a vertex of the range is not a vertex of the mesh");
-    movable[found] = 1;
+    const auto found = flat_of.find(v);
+    require(found != flat_of.end(), "a vertex of the range is not a vertex of the mesh");
+    movable[found->second] = 1;
   }
 
   // Classify vertices on T_ori (paper §3).

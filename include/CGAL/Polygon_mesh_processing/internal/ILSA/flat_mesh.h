@@ -130,15 +130,6 @@ template <class VertexIndexMap> struct Flat_indices {
   VertexIndexMap map;
   std::vector<std::size_t> flat; // flat index of each map index
 
-  /// The flat index of `v`, or `npos` if `v` is not a vertex of the mesh the map was built for
-  /// (`vertex_list` lists the mesh's descriptors by flat index).
-  template <class Key, class Descriptor>
-  std::size_t find(const Key& v, const std::vector<Descriptor>& vertex_list) const {
-    const auto i = get(map, v);
-    if (!(std::size_t(i) < flat.size())) return npos; // a negative index wraps round
-    const std::size_t f = flat[std::size_t(i)];
-    return f != npos && vertex_list[f] == v ? f : npos;
-  }
   template <class Descriptor> std::size_t operator()(const Descriptor& v) const {
     return flat[std::size_t(get(map, v))];
   }
