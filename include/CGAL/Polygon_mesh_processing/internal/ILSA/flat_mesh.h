@@ -123,7 +123,7 @@ inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<std::size
 }
 
 /// Flat index of each vertex (or face) descriptor, through an index map (the
-/// user's `vertex_index_map`, or CGAL's `get_initialized_vertex_index_map()`).
+/// user's `vertex_index_map`, or the dynamic map of `vertex_index_map_of()`).
 /// Flat indices follow the order of `vertices(tm)` whatever the map's order, so
 /// the result does not depend on it.
 template <class VertexIndexMap> struct Flat_indices {
