@@ -70,6 +70,9 @@ public:
     face_now_.assign(m_.number_of_faces(), 0.);
     vertex_round_.assign(m_.number_of_vertices(), 0);
     vertex_now_.assign(m_.number_of_vertices(), 0.);
+    vertex_witness_.assign(m_.number_of_vertices(), npos);
+    face_witness_.resize(m_.number_of_faces());
+    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) face_witness_[f] = {f, f, f, f};
     tries_.assign(m_.number_of_vertices(), 0);
     checked_.assign(m_.number_of_vertices(), 0);
     is_moved_.assign(m_.number_of_vertices(), 0);
@@ -143,10 +146,12 @@ public:
           for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
             if (deviation_round_[*f] != round_) deviation_round_[*f] = round_, faces.push_back(*f);
         }
-        parallel_for<ConcurrencyTag>(
-            vertices.size(), [&](std::size_t i) { vertex_now_[vertices[i]] = vertex_deviation(next, vertices[i]); });
-        parallel_for<ConcurrencyTag>(faces.size(),
-                                     [&](std::size_t i) { face_now_[faces[i]] = face_deviation(next, faces[i]); });
+        parallel_for<ConcurrencyTag>(vertices.size(), [&](std::size_t i) {
+          vertex_now_[vertices[i]] = vertex_deviation(next, vertices[i], vertex_witness_[vertices[i]]);
+        });
+        parallel_for<ConcurrencyTag>(faces.size(), [&](std::size_t i) {
+          face_now_[faces[i]] = face_deviation(next, faces[i], face_witness_[faces[i]]);
+        });
         parallel_for<ConcurrencyTag>(undecided.size(), [&](std::size_t i) {
           const std::size_t v = undecided[i];
           bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
@@ -222,14 +227,18 @@ private:
   bool deviates(const std::vector<Vec3>& previous, std::size_t v) const {
     auto cuts = [&](std::size_t w) {
       const double now = vertex_now_[w];
-      return now > fidelity_tolerance_ && now > vertex_deviation(previous, w);
+      if (!(now > fidelity_tolerance_)) return false;
+      std::size_t witness = vertex_witness_[w];
+      return now > vertex_deviation(previous, w, witness);
     };
     if (cuts(v)) return true;
     for (const std::size_t* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w)
       if (cuts(*w)) return true;
     for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
       const double now = face_now_[*f];
-      if (now > fidelity_tolerance_ && now > face_deviation(previous, *f)) return true;
+      if (!(now > fidelity_tolerance_)) continue;
+      std::array<std::size_t, 4> witnesses = face_witness_[*f];
+      if (now > face_deviation(previous, *f, witnesses)) return true;
     }
     return false;
   }
@@ -306,19 +315,23 @@ private:
   }
 
   // Largest distance from the centroid and the edge midpoints of face `f` at
-  // `pos` to the input surface around the face's vertices.
-  double face_deviation(const std::vector<Vec3>& pos, std::size_t f) const {
+  // `pos` to the input surface around the face's vertices. `witnesses`: for
+  // each of these points, the face looked at first (see squared_distance_near()).
+  double face_deviation(const std::vector<Vec3>& pos, std::size_t f, std::array<std::size_t, 4>& witnesses) const {
     const auto& t = m_.faces[f];
     const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
+    const std::array<Vec3, 4> points{Vec3((a + b + c) / 3.), Vec3((a + b) / 2.), Vec3((b + c) / 2.),
+                                     Vec3((c + a) / 2.)};
     double worst = 0;
-    for (const Vec3& x : {Vec3((a + b + c) / 3.), Vec3((a + b) / 2.), Vec3((b + c) / 2.), Vec3((c + a) / 2.)})
-      worst = (std::max)(worst, squared_distance_near(x, m_.points, t, f));
+    for (std::size_t i = 0; i < 4; ++i)
+      worst = (std::max)(worst, squared_distance_near(points[i], m_.points, t, witnesses[i]));
     return std::sqrt(worst);
   }
 
-  // Distance from the input position of `w` to the surface around `w` at `pos`.
-  double vertex_deviation(const std::vector<Vec3>& pos, std::size_t w) const {
-    return std::sqrt(squared_distance_near(m_.points[w], pos, std::array<std::size_t, 1>{w}));
+  // Distance from the input position of `w` to the surface around `w` at `pos`;
+  // `witness` as in squared_distance_near().
+  double vertex_deviation(const std::vector<Vec3>& pos, std::size_t w, std::size_t& witness) const {
+    return std::sqrt(squared_distance_near(m_.points[w], pos, std::array<std::size_t, 1>{w}, witness));
   }
 
   // Squared distance from `x` to the faces (at positions `pos`) around the
@@ -326,17 +339,23 @@ private:
   // neighbours. Beyond the tolerance the value is the minimum over all these
   // faces (an upper bound of the distance to the surface); within it the scan
   // stops at the first face in reach, so the value depends on the scan order,
-  // and callers only compare it with the tolerance. `first`, a face around
-  // `around` likely to be close, is looked at first.
+  // and callers only compare it with the tolerance: the result of the check
+  // does not depend on the order. `witness`, a face of these (or npos), is
+  // looked at first, and is set to the face found in reach: the one that was
+  // in reach at the last call for the same point is most often in reach again,
+  // vertices move little between two calls, so most scans look at one face.
   template <std::size_t N>
   double squared_distance_near(const Vec3& x, const std::vector<Vec3>& pos, const std::array<std::size_t, N>& around,
-                               std::size_t first = npos) const {
+                               std::size_t& witness) const {
     const double tolerance2 = fidelity_tolerance_ * fidelity_tolerance_;
+    const std::size_t first = witness;
     double best = std::numeric_limits<double>::infinity();
     auto in_reach = [&](std::size_t f) {
       const auto& t = m_.faces[f];
       best = (std::min)(best, squared_distance_to_triangle(x, pos[t[0]], pos[t[1]], pos[t[2]]));
-      return best <= tolerance2;
+      if (best > tolerance2) return false;
+      witness = f;
+      return true;
     };
     if (first != npos && in_reach(first)) return best;
     auto scan = [&](std::size_t u) {
@@ -384,6 +403,8 @@ private:
   std::vector<std::size_t> face_round_;                     // round in which a face's offending flag was computed
   std::vector<std::size_t> deviation_round_, vertex_round_; // round of the deviations below
   std::vector<double> face_now_, vertex_now_;               // face_deviation / vertex_deviation at `next`
+  std::vector<std::size_t> vertex_witness_;                 // face first looked at by vertex_deviation
+  std::vector<std::array<std::size_t, 4>> face_witness_;    // the same, for each point of face_deviation
   std::vector<unsigned char> is_moved_;
   std::size_t round_ = 0;
 };
