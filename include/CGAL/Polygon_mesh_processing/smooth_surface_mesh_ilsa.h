@@ -332,7 +332,6 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
 
   // T_new := T_ori. `home` is the original face (ridge: sharp edge) each vertex lies on.
   std::vector<Vec3> pos = original.points, next, target(pos.size()), d, face_normals;
-  std::vector<Vec3> vertex_normals(pos.size(), Vec3::Zero());
   std::vector<std::size_t> home(pos.size(), ilsa::npos), next_home, moved;
   std::vector<unsigned char> guarded(pos.size(), 0);
   for (std::size_t v : neighborhoods.adjustable) home[v] = projector.initial_home(v);
@@ -353,17 +352,13 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   double mean_q = minimum_gain > 0 ? mean_quality() : 0.;
 
   for (std::size_t step = 0; step < std::size_t(iterations); ++step) {
-    // N(v): discrete normal of every smooth vertex of T_new (paper §3, normalised).
+    // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices
+    // (Algo. 3; the face normals of T_new give the discrete normal N(v) of
+    // paper §3 where the penalty plane needs it).
     ilsa::compute_face_normals<ConcurrencyTag>(original, pos, face_normals);
-    ilsa::parallel_for<ConcurrencyTag>(neighborhoods.smooth.size(), [&](std::size_t i) {
-      const std::size_t v = neighborhoods.smooth[i];
-      const Vec3 n = ilsa::discrete_normal(original, face_normals, v);
-      vertex_normals[v] = n.norm() > 0 ? Vec3(n.normalized()) : n;
-    });
-    // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices (Algo. 3).
     ilsa::compute_ilsa_displacement<ConcurrencyTag>(pos, neighborhoods, relax1, std::size_t(sweeps), tolerance, d,
                                                     ilsa_workspace);
-    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, vertex_normals, neighborhoods, penalty, d,
+    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, face_normals, neighborhoods, penalty, d,
                                                          penalty_workspace);
 
     // p(v): projection of v + d(v) onto T_ori (user manual, "Projection guard"), then the safety check.

@@ -14,6 +14,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/jacobi_sweeps.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
 #include <Eigen/Cholesky>
 
@@ -41,21 +42,31 @@ struct Penalty_workspace {
 };
 
 /// Plane of the soft constraint c(x) = 0 (user manual, "Plane constraint units"), as `a · (x − v) = k` with
-/// unit `a`. With no displacement yet it is the tangent plane at `v`; otherwise
-/// the plane through `v + d` perpendicular to `d`. The paper's second form,
+/// unit `a`. With no displacement yet it is the tangent plane at `v`, whose
+/// normal N(v) (paper §3, normalised) `vertex_normal()` computes; otherwise the
+/// plane through `v + d` perpendicular to `d`. The paper's second form,
 /// `d · (x − v) − |d|²`, is this one multiplied by `|d|`: normalising it gives
-/// c the unit of a length in both cases, so μ is scale-free.
-inline std::pair<Vec3, double> penalty_plane(const Vec3& d, const Vec3& vertex_normal) {
+/// c the unit of a length in both cases, so μ is scale-free. N(v) is only
+/// computed for a zero displacement: its least-squares solve is needed for few
+/// vertices, if any.
+template <class VertexNormal> std::pair<Vec3, double> penalty_plane(const Vec3& d, const VertexNormal& vertex_normal) {
   const double length = d.norm();
   if (length > 0) return {d / length, length};
-  return {vertex_normal, 0.};
+  return {vertex_normal(), 0.};
+}
+
+/// Unit discrete normal N(v) of the smooth vertex `v` (paper §3), or zero.
+inline Vec3 unit_vertex_normal(const Flat_mesh& m, const std::vector<Vec3>& face_normals, std::size_t v) {
+  const Vec3 n = discrete_normal(m, face_normals, v);
+  return n.norm() > 0 ? Vec3(n.normalized()) : n;
 }
 
 /// Minimiser of Q(x; μ) for the smooth vertex `v`, relative to `pos[v]`.
 /// Every term is quadratic in x, so ∇Q = 0 is the 3x3 system H x = r.
+/// `face_normals`: unit normals of the faces at `pos`.
 inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3>& pos, const std::vector<Vec3>& d,
-                                      const std::vector<double>& beta, const Vec3& vertex_normal, std::size_t v,
-                                      const Penalty_parameters& p) {
+                                      const std::vector<double>& beta, const std::vector<Vec3>& face_normals,
+                                      std::size_t v, const Penalty_parameters& p) {
   const Vec3& x0 = pos[v];
   auto pending = [&](std::size_t w) -> Vec3 { return pos[w] + d[w] - x0; };
 
@@ -78,7 +89,7 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
   }
 
   // Penalty term (1/μ) (a·x − k)².
-  const auto plane = penalty_plane(d[v], vertex_normal);
+  const auto plane = penalty_plane(d[v], [&] { return unit_vertex_normal(m, face_normals, v); });
   H += (2. / p.mu) * plane.first * plane.first.transpose();
   r += (2. / p.mu) * plane.second * plane.first;
 
@@ -96,7 +107,7 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 /// entry and the adjusted ones on exit. Returns the number of sweeps run.
 template <class ConcurrencyTag>
 std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
-                                           const std::vector<Vec3>& vertex_normals, const Ilsa_neighborhoods& nb,
+                                           const std::vector<Vec3>& face_normals, const Ilsa_neighborhoods& nb,
                                            const Penalty_parameters& p, std::vector<Vec3>& d, Penalty_workspace& ws) {
   // β_j from the current faces; a floor at 1e-3 of the mean area keeps a
   // degenerate face from swamping the star.
@@ -111,7 +122,7 @@ std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector
                                [&](std::size_t f) { ws.beta[f] = 1. / (std::max)(ws.beta[f], smallest_area); });
 
   return run_jacobi_sweeps<ConcurrencyTag>(nb.smooth, p.sweeps, p.tolerance, d, ws.next, [&](std::size_t v) {
-    const Vec3 d_new = minimize_penalty_function(m, pos, d, ws.beta, vertex_normals[v], v, p);
+    const Vec3 d_new = minimize_penalty_function(m, pos, d, ws.beta, face_normals, v, p);
     return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
   });
 }
