@@ -64,11 +64,14 @@ public:
     reference_.resize(m_.number_of_faces());
     for (std::size_t f = 0; f < m_.number_of_faces(); ++f) reference_[f] = own[f].isZero(0) ? neighbors[f] : own[f];
     offends_.assign(m_.number_of_faces(), 0);
+    quality_now_.assign(m_.number_of_faces(), 0.);
     face_round_.assign(m_.number_of_faces(), 0);
     deviation_round_.assign(m_.number_of_faces(), 0);
     bad_.assign(m_.number_of_vertices(), 0);
     face_now_.assign(m_.number_of_faces(), 0.);
     vertex_round_.assign(m_.number_of_vertices(), 0);
+    changed_round_.assign(m_.number_of_vertices(), 0);
+    ring_changed_.assign(m_.number_of_vertices(), 0);
     vertex_now_.assign(m_.number_of_vertices(), 0.);
     vertex_witness_.assign(m_.number_of_vertices(), npos);
     face_witness_.resize(m_.number_of_faces());
@@ -96,6 +99,7 @@ public:
                  const std::vector<Vec3>& target, const std::vector<std::size_t>& moved, std::vector<Vec3>& next,
                  std::vector<std::size_t>& next_home, const Project& project) {
     for (std::size_t v : moved) tries_[v] = 0, is_moved_[v] = 1;
+    const std::size_t first_round = round_ + 1;
     const bool fidelity = std::isfinite(fidelity_tolerance_);
     std::vector<std::size_t> to_check(moved), offenders, faces, vertices, undecided;
     while (!to_check.empty()) {
@@ -105,9 +109,14 @@ public:
       for (std::size_t v : to_check)
         for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
           if (face_round_[*f] != round_) face_round_[*f] = round_, faces.push_back(*f);
+      const bool quality_tests = quality_floor_ > 0 || reject_worsening_;
       parallel_for<ConcurrencyTag>(faces.size(), [&](std::size_t i) {
         const std::size_t f = faces[i];
         offends_[f] = offends(previous, next, f);
+        if (quality_tests) {
+          const auto& t = m_.faces[f];
+          quality_now_[f] = triangle_aspect_ratio(next[t[0]], next[t[1]], next[t[2]]);
+        }
       });
       // A vertex is shortened when any face around it offends, so every moved
       // vertex of an offending face is; then the quality tests.
@@ -117,8 +126,8 @@ public:
         for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
           if (offends_[*f]) bad_[v] = 1;
         if (bad_[v]) return;
-        if (!(quality_floor_ > 0 || reject_worsening_)) return;
-        const Star_quality now = star_quality(next, v, next[v]);
+        if (!quality_tests) return;
+        const Star_quality now = star_quality_now(v);
         // The star's worst triangle may not get worse and end below the floor.
         if (quality_floor_ > 0 && now.worst < quality_floor_ &&
             now.worst < star_quality(previous, v, previous[v]).worst)
@@ -131,20 +140,29 @@ public:
         }
       });
       if (fidelity) {
-        // The distances at `next` that neighbouring vertices share.
+        // The distances at `next` that neighbouring vertices share, unless
+        // computed in an earlier round of this call with the same positions:
+        // a face's depends on its vertices, a vertex's on the vertices up to
+        // two edges away.
         undecided.clear();
         vertices.clear();
         faces.clear();
+        auto current = [&](std::size_t computed, std::size_t changed) {
+          return computed == round_ || (computed >= first_round && changed < computed);
+        };
         for (std::size_t v : to_check) {
           if (bad_[v]) continue;
           undecided.push_back(v);
           auto share = [&](std::size_t w) {
-            if (vertex_round_[w] != round_) vertex_round_[w] = round_, vertices.push_back(w);
+            if (!current(vertex_round_[w], ring_changed_[w])) vertex_round_[w] = round_, vertices.push_back(w);
           };
           share(v);
           for (const std::size_t* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
-          for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
-            if (deviation_round_[*f] != round_) deviation_round_[*f] = round_, faces.push_back(*f);
+          for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+            const auto& t = m_.faces[*f];
+            const std::size_t changed = (std::max)({changed_round_[t[0]], changed_round_[t[1]], changed_round_[t[2]]});
+            if (!current(deviation_round_[*f], changed)) deviation_round_[*f] = round_, faces.push_back(*f);
+          }
         }
         parallel_for<ConcurrencyTag>(vertices.size(), [&](std::size_t i) {
           vertex_now_[vertices[i]] = vertex_deviation(next, vertices[i], vertex_witness_[vertices[i]]);
@@ -174,6 +192,16 @@ public:
         }
       });
       // Only the stars of the vertices just changed need a new look.
+      for (std::size_t v : offenders) {
+        changed_round_[v] = round_;
+        auto ring = [&](std::size_t u) {
+          ring_changed_[u] = round_;
+          for (const std::size_t* x = m_.vertex_neighbors.first(u); x != m_.vertex_neighbors.last(u); ++x)
+            ring_changed_[*x] = round_;
+        };
+        ring(v);
+        for (const std::size_t* u = m_.vertex_neighbors.first(v); u != m_.vertex_neighbors.last(v); ++u) ring(*u);
+      }
       to_check.clear();
       for (std::size_t v : offenders)
         for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
@@ -375,6 +403,18 @@ private:
     double worst = 1., mean = 0.;
   };
 
+  // star_quality(next, v, next[v]) from the aspect ratios of the faces at
+  // `next` computed in the current round, summed in the same order.
+  Star_quality star_quality_now(std::size_t v) const {
+    Star_quality q;
+    for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+      q.worst = (std::min)(q.worst, quality_now_[*f]);
+      q.mean += quality_now_[*f];
+    }
+    q.mean /= double((std::max)(m_.vertex_faces.size(v), std::size_t(1)));
+    return q;
+  }
+
   // Worst and mean aspect ratio around `v`, with `v` at `at` and the others at `pos`.
   Star_quality star_quality(const std::vector<Vec3>& pos, std::size_t v, const Vec3& at) const {
     auto point = [&](std::size_t w) -> const Vec3& { return w == v ? at : pos[w]; };
@@ -397,11 +437,14 @@ private:
   std::size_t halvings_;
   std::vector<Vec3> reference_;
   std::vector<unsigned char> offends_;                      // per face, in the current round
+  std::vector<double> quality_now_;                         // per face: its aspect ratio at `next`, likewise
   std::vector<unsigned char> bad_;                          // per vertex: its move offends, in the current round
   std::vector<std::size_t> tries_;                          // halvings applied to a vertex's move
   std::vector<std::size_t> checked_;                        // round in which a vertex was queued for a check
   std::vector<std::size_t> face_round_;                     // round in which a face's offending flag was computed
-  std::vector<std::size_t> deviation_round_, vertex_round_; // round of the deviations below
+  std::vector<std::size_t> deviation_round_, vertex_round_; // round in which the deviations below were computed
+  std::vector<std::size_t> changed_round_;                  // last round in which a vertex's move changed
+  std::vector<std::size_t> ring_changed_;                   // the same, for any vertex up to two edges away
   std::vector<double> face_now_, vertex_now_;               // face_deviation / vertex_deviation at `next`
   std::vector<std::size_t> vertex_witness_;                 // face first looked at by vertex_deviation
   std::vector<std::array<std::size_t, 4>> face_witness_;    // the same, for each point of face_deviation
