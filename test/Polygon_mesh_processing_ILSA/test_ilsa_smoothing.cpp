@@ -5,7 +5,8 @@
 // Polyhedron_3 agree; the result does not depend on the vertex order (Jacobi);
 // named parameters chain in both orders; the range overload fixes the rest;
 // the default quality floor keeps the input's minimum aspect ratio; no move
-// that lowers its star's mean quality is kept; the convergence stop.
+// that lowers its star's mean quality is kept; the convergence stop; the
+// progress callback; the fidelity summary without the Hausdorff distance.
 #include "ilsa_test_utils.h"
 
 #include <CGAL/AABB_segment_primitive.h>
@@ -377,7 +378,47 @@ template <class Mesh> void test_convergence_stop() {
   assert(std::abs(mean_after(20) - PMP::mesh_quality_ilsa(m).mean_aspect_ratio) <= 0.002);
 }
 
+// The callback sees the advancement after each iteration and does not change
+// the result; returning false stops the run where a shorter run would end.
+template <class Mesh> void test_callback() {
+  const Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
+  const auto np = CGAL::parameters::number_of_iterations(5).ilsa_minimum_quality_gain(0.);
+  Mesh plain = original, watched = original, stopped = original, shorter = original;
+  PMP::smooth_surface_mesh_ilsa(plain, np);
+  std::vector<double> seen;
+  const std::function<bool(double)> record = [&](double a) { return seen.push_back(a), true; };
+  const auto s = PMP::smooth_surface_mesh_ilsa(watched, np.callback(record));
+  assert(s.number_of_iterations == 5 && seen.size() == 5);
+  for (std::size_t i = 0; i < seen.size(); ++i) assert(seen[i] == double(i + 1) / 5.);
+  assert(points_of(watched) == points_of(plain));
+  std::size_t calls = 0;
+  const std::function<bool(double)> stop_after_two = [&](double) { return ++calls < 2; };
+  const auto t = PMP::smooth_surface_mesh_ilsa(stopped, np.callback(stop_after_two));
+  PMP::smooth_surface_mesh_ilsa(shorter, CGAL::parameters::number_of_iterations(2).ilsa_minimum_quality_gain(0.));
+  assert(calls == 2 && t.number_of_iterations == 2);
+  assert(points_of(stopped) == points_of(shorter) && points_of(stopped) != points_of(plain));
+  std::cout << "callback: " << seen.size() << " calls, stopped after " << t.number_of_iterations << std::endl;
+}
+
+// mesh_fidelity_ilsa without the Hausdorff distance: NaN there, the rest the same.
+template <class Mesh> void test_fidelity_without_hausdorff() {
+  const Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
+  Mesh m = original;
+  PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::number_of_iterations(3));
+  const auto full = PMP::mesh_fidelity_ilsa(original, m);
+  const auto cheap = PMP::mesh_fidelity_ilsa(original, m, CGAL::parameters::ilsa_compute_hausdorff_distance(false));
+  assert(full.hausdorff_distance > 0 && std::isnan(cheap.hausdorff_distance));
+  assert(cheap.number_of_flipped_faces == full.number_of_flipped_faces &&
+         cheap.max_vertex_distance == full.max_vertex_distance &&
+         cheap.max_crease_deviation == full.max_crease_deviation && cheap.volume_change == full.volume_change &&
+         cheap.number_of_sharp_edges == full.number_of_sharp_edges);
+}
+
 int main() {
+  test_callback<Surface_mesh>();
+  test_callback<Polyhedron>();
+  test_fidelity_without_hausdorff<Surface_mesh>();
+  test_fidelity_without_hausdorff<Polyhedron>();
   test_convergence_stop<Surface_mesh>();
   test_convergence_stop<Polyhedron>();
   test_worsening_moves_rejected<Surface_mesh>();

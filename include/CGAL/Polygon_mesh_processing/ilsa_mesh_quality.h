@@ -207,7 +207,9 @@ struct ILSA_fidelity_summary {
   std::size_t number_of_flipped_faces = 0; ///< faces whose normal turned by more than 90 degrees
   double max_vertex_distance = 0;          ///< largest distance of a smoothed vertex to the original surface
   double mean_vertex_distance = 0;
-  double hausdorff_distance = 0; ///< approximate symmetric Hausdorff distance (CGAL's, `random_seed`)
+  /// approximate symmetric Hausdorff distance (CGAL's, `random_seed`); NaN with
+  /// `ilsa_compute_hausdorff_distance(false)`
+  double hausdorff_distance = 0;
   bool closed = false;
   double volume_change = 0;              ///< (V_smoothed - V_original) / V_original, closed meshes only
   std::size_t number_of_sharp_edges = 0; ///< crease edges: sharp edges of the original (face normals more than the
@@ -232,7 +234,10 @@ struct ILSA_fidelity_summary {
 /// - `random_seed` (default 0): the seed of the Hausdorff distance, which
 ///   samples both meshes with CGAL's `approximate_symmetric_Hausdorff_distance()`
 ///   (the calling thread's CGAL default generator is reseeded for it and then
-///   restored).
+///   restored);
+/// - `ilsa_compute_hausdorff_distance` (default `true`): `false` skips the
+///   Hausdorff distance (`hausdorff_distance` is then NaN), the costly part on
+///   large meshes: the other figures take about one AABB tree query per vertex.
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const TriangleMesh& smoothed,
                                          const NamedParameters& np = parameters::default_values()) {
@@ -240,6 +245,7 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   using parameters::get_parameter;
   const double feature_angle = choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), 20.);
   const unsigned int seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+  const bool with_hausdorff = choose_parameter(get_parameter(np, internal_np::ilsa_compute_hausdorff_distance), true);
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using P = K::Point_3;
   using Mesh = CGAL::Surface_mesh<P>;
@@ -286,7 +292,9 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   // generator), so that generator is seeded too for a repeatable distance. It
   // is thread-local in CGAL (CGAL/Random.h), and the guard restores its state
   // on every way out: the caller's generator is left as it was.
-  {
+  if (!with_hausdorff) {
+    r.hausdorff_distance = std::numeric_limits<double>::quiet_NaN();
+  } else {
     struct Default_random_guard {
       CGAL::Random saved = CGAL::get_default_random();
       ~Default_random_guard() { CGAL::get_default_random() = saved; }

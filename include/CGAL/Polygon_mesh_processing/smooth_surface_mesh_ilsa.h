@@ -31,6 +31,7 @@
 #include <boost/unordered_map.hpp>
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <type_traits>
@@ -202,7 +203,14 @@ namespace Polygon_mesh_processing {
  * normals are more than `ilsa_feature_angle` apart may not move farther than it from their input position, nor their
  * input points end farther than it from them. Relative to the bounding-box diagonal.
  * `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no such bound)}
- * \cgalParamType{`double`, positive} \cgalParamDefault{`3e-4`} \cgalParamNEnd \cgalParamNBegin{verbose}
+ * \cgalParamType{`double`, positive} \cgalParamDefault{`3e-4`} \cgalParamNEnd \cgalParamNBegin{callback}
+ *     \cgalParamDescription{called after each iteration with the advancement, the iterations run over
+ * `number_of_iterations` (the last call may come before 1 when the run stops early); when it returns `false`, the
+ * run stops there, with the mesh as that iteration left it (every guarantee holds after any iteration)}
+ *     \cgalParamType{an instance of `std::function<bool(double)>`}
+ *     \cgalParamDefault{no callback}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{verbose}
  *     \cgalParamDescription{whether to print the vertex types and what each iteration did to `std::cerr`}
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`false`}
@@ -254,6 +262,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const double fidelity_tolerance = choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), 3e-4);
   const double minimum_gain = choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), 1e-4);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
+  const std::function<bool(double)> callback =
+      choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
   // (ilsa_feature_angle, ilsa_fix_unattached_candidates and the constraint
   // maps are read by read_classification_parameters() below.)
 
@@ -392,6 +402,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
       std::cerr << "ILSA iteration " << step + 1 << ": " << moved.size() << " moves, "
                 << stats.number_of_shortened_moves << " shortened and " << stats.number_of_rejected_moves
                 << " rejected so far\n";
+    if (callback && !callback(double(step + 1) / double(iterations))) break;
     if (minimum_gain > 0) {
       const double before = mean_q;
       mean_q = mean_quality();

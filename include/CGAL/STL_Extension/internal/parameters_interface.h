@@ -41,6 +41,7 @@ CGAL_add_named_parameter(ilsa_fidelity_tolerance_t, ilsa_fidelity_tolerance, ils
 CGAL_add_named_parameter(ilsa_quality_monotone_t, ilsa_quality_monotone, ilsa_quality_monotone)
 CGAL_add_named_parameter(ilsa_reject_worsening_moves_t, ilsa_reject_worsening_moves, ilsa_reject_worsening_moves)
 CGAL_add_named_parameter(ilsa_quality_threshold_t, ilsa_quality_threshold, ilsa_quality_threshold)
+CGAL_add_named_parameter(ilsa_compute_hausdorff_distance_t, ilsa_compute_hausdorff_distance, ilsa_compute_hausdorff_distance)
 // clang-format on
 
 // Checked by the package's public headers: if CGAL's own list was picked up
