@@ -5,13 +5,18 @@
 //
 // With no INPUT, the bundled horse is smoothed. Every format that
 // CGAL::IO::read_polygon_mesh reads is accepted; OUTPUT keeps the vertex and
-// face order and is written with 17 significant digits, only on success.
+// face order and is written only on success, with 17 significant digits
+// (binary doubles in PLY; STL stores 32-bit floats, the format's limit).
+// `ilsa_smooth --help` lists the options.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/Color.h>
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_version.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "ilsa_example_data.h"
@@ -30,6 +35,8 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <unistd.h>
+#include <utility>
 #include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -58,10 +65,22 @@ struct Options {
   bool fix_unattached = true, project = true, safety = true, monotone = false, reject_worsening = true, verbose = false;
   unsigned int worst = 0;                                                   // faces listed by --worst
   unsigned int threads = std::max(1u, std::thread::hardware_concurrency()); // 1: sequential
+  bool triangulate = false, color_by_quality = false, color_by_type = false;
+  std::string report = "auto";                             // auto, summary or full
+  std::optional<bool> progress;                            // default: on when stderr is a terminal
+  static constexpr std::size_t full_report_faces = 200000; // --report auto: full up to this many faces
 };
 
 const char* usage =
     "usage: ilsa_smooth [INPUT [OUTPUT]] [options]\n"
+    "Smooths the triangle mesh INPUT with ILSA (default: the bundled horse) and prints its quality\n"
+    "before and after; OUTPUT, when given, receives the result. Options take their value as\n"
+    "'--option value' or '--option=value'.\n"
+    "Formats (by extension): .off .obj .ply .stl .ts (GOCAD) and .vtp (when CGAL has VTK), in and out.\n"
+    "OUTPUT keeps the vertex and face order, with 17 significant digits (.ply: binary doubles);\n"
+    ".stl holds 32-bit floats only (about 7 digits): the format's limit.\n"
+    "  --help, -h              this text\n"
+    "  --version               the package's version\n"
     "  --iterations N          largest number of global iterations (default 20)\n"
     "  --min-gain X            stop once an iteration raises the mean q by less, >= 0,\n"
     "                          0 runs every iteration (default 1e-4)\n"
@@ -84,6 +103,17 @@ const char* usage =
     "  --fidelity-tolerance X  safety check: largest distance of the surface from an input vertex,\n"
     "                          relative to the bounding-box diagonal, > 0, inf disables (default 3e-4)\n"
     "  --threads N             threads (default: all cores; 1: sequential; the result is the same)\n"
+    "  --triangulate           split non-triangle faces first (CGAL triangulate_faces);\n"
+    "                          without it a non-triangle face is an error\n"
+    "  --color-by-quality      OUTPUT (.ply) gets face colours by aspect ratio q:\n"
+    "                          red 0, orange 0.25, yellow 0.5, light green 0.75, green 1\n"
+    "  --color-by-type         OUTPUT (.ply) gets vertex colours by ILSA vertex type:\n"
+    "                          smooth grey, ridge blue, corner red, boundary green\n"
+    "  --report auto|summary|full\n"
+    "                          fidelity report: full adds the Hausdorff distance (sampling, costly\n"
+    "                          on large meshes); auto: full up to 200000 faces (default auto)\n"
+    "  --progress, --no-progress\n"
+    "                          a progress line per iteration on stderr (default: on a terminal)\n"
     "  --verbose               print what each iteration does\n"
     "  --worst N               list the N worst faces after smoothing: aspect ratio before and after,\n"
     "                          type of each vertex and whether it moved, smallest dihedral angle of\n"
@@ -135,27 +165,45 @@ Options parse(int argc, char** argv) {
          if (o.threads == 0) throw std::invalid_argument("--threads expects at least 1, got '" + s + "'");
        }},
   };
-  std::map<std::string, bool*> switches{{"--no-project", nullptr},
-                                        {"--no-safety", nullptr},
-                                        {"--quality-monotone", &o.monotone},
-                                        {"--verbose", &o.verbose}};
+  valued["--report"] = [&](const std::string& s) {
+    if (s != "auto" && s != "summary" && s != "full")
+      throw std::invalid_argument("--report expects auto, summary or full, got '" + s + "'");
+    o.report = s;
+  };
+  std::map<std::string, std::function<void()>> switches{
+      {"--no-project", [&] { o.project = false; }},
+      {"--no-safety", [&] { o.safety = false; }},
+      {"--quality-monotone", [&] { o.monotone = true; }},
+      {"--verbose", [&] { o.verbose = true; }},
+      {"--triangulate", [&] { o.triangulate = true; }},
+      {"--color-by-quality", [&] { o.color_by_quality = true; }},
+      {"--color-by-type", [&] { o.color_by_type = true; }},
+      {"--progress", [&] { o.progress = true; }},
+      {"--no-progress", [&] { o.progress = false; }},
+      {"--help", [] { std::cout << usage, std::exit(0); }},
+      {"-h", [] { std::cout << usage, std::exit(0); }},
+      {"--version",
+       [] {
+         std::cout << "ilsa_smooth " << CGAL_PMP_ILSA_VERSION << " (CGAL " << CGAL_VERSION_STR << ")\n", std::exit(0);
+       }},
+  };
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help") {
-      std::cout << usage;
-      std::exit(0);
-    }
-    if (valued.count(arg)) {
-      if (i + 1 >= argc) throw std::invalid_argument(arg + " expects a value");
-      valued[arg](argv[++i]);
-    } else if (arg == "--no-project") {
-      o.project = false;
-    } else if (arg == "--no-safety") {
-      o.safety = false;
-    } else if (switches.count(arg)) {
-      *switches[arg] = true;
+    // --option=value is --option value.
+    const std::size_t equals = arg.rfind("--", 0) == 0 ? arg.find('=') : std::string::npos;
+    const std::string name = arg.substr(0, equals);
+    if (valued.count(name)) {
+      if (equals != std::string::npos)
+        valued[name](arg.substr(equals + 1));
+      else if (i + 1 < argc)
+        valued[name](argv[++i]);
+      else
+        throw std::invalid_argument(name + " expects a value");
+    } else if (switches.count(name)) {
+      if (equals != std::string::npos) throw std::invalid_argument(name + " takes no value, got '" + arg + "'");
+      switches[name]();
     } else if (arg.size() > 1 && arg[0] == '-') {
-      throw std::invalid_argument("unknown option '" + arg + "' (see --help)");
+      throw std::invalid_argument("unknown option '" + name + "' (see --help)");
     } else {
       positional.push_back(arg);
     }
@@ -163,7 +211,44 @@ Options parse(int argc, char** argv) {
   if (positional.size() > 2) throw std::invalid_argument("too many file arguments (see --help)");
   if (positional.size() > 0) o.input = positional[0];
   if (positional.size() > 1) o.output = positional[1];
+  // Checked before anything is read or smoothed.
+  for (const auto& [flag, on] : {std::pair<const char*, bool>{"--color-by-quality", o.color_by_quality},
+                                 std::pair<const char*, bool>{"--color-by-type", o.color_by_type}})
+    if (on && (o.output.size() < 4 || o.output.substr(o.output.size() - 4) != ".ply"))
+      throw std::invalid_argument(std::string(flag) + " writes colours to a PLY file: give an OUTPUT ending in .ply");
   return o;
+}
+
+// The library's messages name its parameters; the tool's name the flags.
+std::string in_flag_terms(std::string message) {
+  static const std::pair<const char*, const char*> names[] = {
+      {"ilsa_penalty_relaxation", "--relax2"},
+      {"ilsa_relaxation", "--relax1"},
+      {"ilsa_penalty_mu", "--mu"},
+      {"ilsa_length_weight", "--wl"},
+      {"ilsa_area_weight", "--wa"},
+      {"ilsa_feature_angle", "--feature-angle"},
+      {"ilsa_crease_kink_angle", "--kink-angle"},
+      {"ilsa_minimum_quality_gain", "--min-gain"},
+      {"ilsa_quality_floor", "--quality-floor"},
+      {"ilsa_fidelity_tolerance", "--fidelity-tolerance"},
+      {"number_of_relaxation_steps", "--relaxation-steps"},
+      {"number_of_iterations", "--iterations"},
+  };
+  for (const auto& [library, flag] : names)
+    for (std::size_t at = message.find(library); at != std::string::npos; at = message.find(library, at))
+      message.replace(at, std::string(library).size(), flag);
+  return message;
+}
+
+// Red (q = 0) through orange, yellow and light green to green (q = 1).
+CGAL::IO::Color quality_color(double q) {
+  static const double stops[5][3] = {{165, 0, 38}, {244, 109, 67}, {254, 224, 139}, {166, 217, 106}, {26, 152, 80}};
+  const double x = (std::min)(1., (std::max)(0., q)) * 4.;
+  const int i = (std::min)(3, int(x));
+  const double t = x - i;
+  auto channel = [&](int c) { return (unsigned char)std::lround(stops[i][c] + t * (stops[i + 1][c] - stops[i][c])); };
+  return CGAL::IO::Color(channel(0), channel(1), channel(2));
 }
 
 void print_quality(const char* label, const PMP::ILSA_quality_summary& q) {
@@ -209,15 +294,60 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
   }
 }
 
+// The library checks its parameters before it reads the mesh: an empty mesh
+// tests the flags' values before the input is read and anything printed.
+template <class Parameters> void check_parameters(const Options& o, const Parameters& np) {
+  Mesh empty;
+  try {
+    if (o.quality_floor)
+      PMP::smooth_surface_mesh_ilsa(empty, np.ilsa_quality_floor(*o.quality_floor));
+    else
+      PMP::smooth_surface_mesh_ilsa(empty, np);
+  } catch (const PMP::ILSA_error& e) {
+    throw std::runtime_error(in_flag_terms(e.what()));
+  }
+}
+
 int run(const Options& o) {
   Mesh mesh;
+  check_parameters(o, CGAL::parameters::number_of_iterations(o.iterations)
+                          .number_of_relaxation_steps(o.relaxation_steps)
+                          .ilsa_relaxation(o.relax1)
+                          .ilsa_penalty_relaxation(o.relax2)
+                          .ilsa_penalty_mu(o.mu)
+                          .ilsa_length_weight(o.wl)
+                          .ilsa_area_weight(o.wa)
+                          .ilsa_feature_angle(o.feature_angle)
+                          .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
+                          .ilsa_minimum_quality_gain(o.minimum_gain)
+                          .ilsa_fidelity_tolerance(o.fidelity_tolerance));
   if (!CGAL::IO::read_polygon_mesh(o.input, mesh))
     throw std::runtime_error("cannot read a polygon mesh from '" + o.input + "'");
   if (num_faces(mesh) == 0) throw std::runtime_error("'" + o.input + "' has no faces");
+  // Input the smoother rejects is reported before any figure is printed.
+  for (const auto& p : mesh.points())
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw std::runtime_error("'" + o.input + "' has a non-finite coordinate (NaN or infinity)");
+  std::size_t polygons = 0;
+  for (auto f : faces(mesh)) polygons += degree(f, mesh) != 3;
   std::cout << o.input << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces\n";
+  if (polygons > 0) {
+    if (!o.triangulate)
+      throw std::runtime_error("'" + o.input + "' has " + std::to_string(polygons) +
+                               " faces that are not triangles: ILSA smooths triangle meshes (--triangulate splits "
+                               "them first)");
+    if (!PMP::triangulate_faces(mesh)) throw std::runtime_error("--triangulate could not split every face");
+    std::cout << "triangulated: " << polygons << " faces split, " << num_faces(mesh) << " triangles\n";
+  }
   print_quality("before", PMP::mesh_quality_ilsa(mesh));
 
   const Mesh original = mesh;
+  const unsigned int total = o.iterations;
+  const bool progress = o.progress.value_or(isatty(fileno(stderr)) != 0) && !o.verbose;
+  const std::function<bool(double)> show_progress = [&](double advancement) {
+    std::cerr << "\rILSA iteration " << std::lround(advancement * total) << " of at most " << total << std::flush;
+    return true;
+  };
   const auto start = std::chrono::steady_clock::now();
   const auto np = CGAL::parameters::number_of_iterations(o.iterations)
                       .number_of_relaxation_steps(o.relaxation_steps)
@@ -235,6 +365,7 @@ int run(const Options& o) {
                       .ilsa_quality_monotone(o.monotone)
                       .ilsa_reject_worsening_moves(o.reject_worsening)
                       .ilsa_fidelity_tolerance(o.fidelity_tolerance)
+                      .callback(progress ? show_progress : std::function<bool(double)>())
                       .verbose(o.verbose);
   // Sequential with one thread, TBB otherwise (when the package was built with it).
 #ifdef CGAL_LINKED_WITH_TBB
@@ -244,8 +375,14 @@ int run(const Options& o) {
     return o.threads == 1 ? PMP::smooth_surface_mesh_ilsa<CGAL::Sequential_tag>(mesh, parameters)
                           : PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(mesh, parameters);
   };
-  const PMP::ILSA_statistics s = o.quality_floor ? smooth(np.ilsa_quality_floor(*o.quality_floor)) : smooth(np);
+  PMP::ILSA_statistics s;
+  try {
+    s = o.quality_floor ? smooth(np.ilsa_quality_floor(*o.quality_floor)) : smooth(np);
+  } catch (const PMP::ILSA_error& e) {
+    throw std::runtime_error(in_flag_terms(e.what()));
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (progress && s.number_of_iterations > 0) std::cerr << "\n";
 
   print_quality("after ", PMP::mesh_quality_ilsa(mesh));
   std::cout << "vertices: " << s.number_of_smooth_vertices << " smooth, " << s.number_of_ridge_vertices << " ridge, "
@@ -256,37 +393,74 @@ int run(const Options& o) {
             << std::setprecision(3) << "time: " << seconds << " s for " << s.number_of_iterations << " iterations ("
             << (o.threads == 1 || !tbb_available ? std::string("sequential") : std::to_string(o.threads) + " threads")
             << ")\n";
-  const PMP::ILSA_fidelity_summary f =
-      PMP::mesh_fidelity_ilsa(original, mesh, CGAL::parameters::ilsa_feature_angle(o.feature_angle));
+  const bool full = o.report == "full" || (o.report == "auto" && num_faces(mesh) <= Options::full_report_faces);
+  const PMP::ILSA_fidelity_summary f = PMP::mesh_fidelity_ilsa(
+      original, mesh, CGAL::parameters::ilsa_feature_angle(o.feature_angle).ilsa_compute_hausdorff_distance(full));
   std::cout << std::scientific << std::setprecision(2) << "fidelity: " << f.number_of_flipped_faces
             << " flipped faces, vertex distance to input max " << f.max_vertex_distance << " mean "
-            << f.mean_vertex_distance << ", Hausdorff " << f.hausdorff_distance << ", crease deviation ("
-            << f.number_of_sharp_edges << " sharp edges, both ways) max " << f.max_crease_deviation << " mean "
-            << f.mean_crease_deviation;
+            << f.mean_vertex_distance << ", ";
+  if (full)
+    std::cout << "Hausdorff " << f.hausdorff_distance;
+  else
+    std::cout << "Hausdorff not computed (--report full)";
+  std::cout << ", crease deviation (" << f.number_of_sharp_edges << " sharp edges, both ways) max "
+            << f.max_crease_deviation << " mean " << f.mean_crease_deviation;
   if (f.closed) std::cout << ", volume change " << f.volume_change;
   std::cout << " [distances relative to the bounding-box diagonal]\n";
 
   if (o.worst > 0) print_worst_faces(original, mesh, o.worst, o);
 
-  if (!o.output.empty()) {
-    // Write next to the target, then rename: a failed write leaves no partial file.
-    // The temporary keeps the extension, which selects the format.
-    const std::size_t dot = o.output.find_last_of('.');
-    const std::size_t slash = o.output.find_last_of('/');
-    const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-    const std::string temporary =
-        has_extension ? o.output.substr(0, dot) + ".ilsa-partial" + o.output.substr(dot) : o.output + ".ilsa-partial";
-    if (!std::ofstream(temporary)) throw std::runtime_error("cannot write '" + o.output + "'");
-    if (!CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17))) {
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write '" + o.output + "'");
-    }
-    if (std::rename(temporary.c_str(), o.output.c_str()) != 0) {
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write '" + o.output + "'");
-    }
-    std::cout << "written: " << o.output << "\n";
+  if (o.output.empty()) {
+    std::cout << "nothing written: no OUTPUT file given\n";
+    return 0;
   }
+  if (o.color_by_quality) {
+    auto colors = mesh.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first;
+    for (auto face : faces(mesh)) {
+      const auto h = halfedge(face, mesh);
+      colors[face] = quality_color(PMP::triangle_aspect_ratio(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)),
+                                                              mesh.point(target(next(h, mesh), mesh))));
+    }
+  }
+  if (o.color_by_type) {
+    // The types of the input, which the smoothing used.
+    std::map<Mesh::Vertex_index, PMP::ILSA_vertex_type> types;
+    PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
+                                CGAL::parameters::ilsa_feature_angle(o.feature_angle)
+                                    .ilsa_fix_unattached_candidates(o.fix_unattached)
+                                    .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle)));
+    auto colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+    for (auto v : vertices(mesh)) {
+      const PMP::ILSA_vertex_type t = types[v];
+      colors[v] = t == PMP::ILSA_vertex_type::Smooth   ? CGAL::IO::Color(190, 190, 190)
+                  : t == PMP::ILSA_vertex_type::Ridge  ? CGAL::IO::Color(30, 90, 220)
+                  : t == PMP::ILSA_vertex_type::Corner ? CGAL::IO::Color(220, 30, 30)
+                                                       : CGAL::IO::Color(30, 170, 60);
+    }
+  }
+  // Write next to the target, then rename: a failed write leaves no partial file.
+  // The temporary keeps the extension, which selects the format.
+  const std::size_t dot = o.output.find_last_of('.');
+  const std::size_t slash = o.output.find_last_of('/');
+  const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  const std::string extension = has_extension ? o.output.substr(dot) : std::string();
+  const std::string temporary =
+      has_extension ? o.output.substr(0, dot) + ".ilsa-partial" + extension : o.output + ".ilsa-partial";
+  if (!std::ofstream(temporary)) throw std::runtime_error("cannot write '" + o.output + "'");
+  if (!CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17))) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + o.output + "' (formats: see --help)");
+  }
+  if (std::rename(temporary.c_str(), o.output.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + o.output + "'");
+  }
+  std::cout << "written: " << o.output;
+  if (extension == ".stl" || extension == ".STL")
+    std::cout << " (STL stores 32-bit floats: coordinates rounded to about 7 significant digits)";
+  if (o.color_by_quality) std::cout << " (faces coloured by q)";
+  if (o.color_by_type) std::cout << " (vertices coloured by type)";
+  std::cout << "\n";
   return 0;
 }
 
@@ -296,7 +470,7 @@ int main(int argc, char** argv) {
   try {
     return run(parse(argc, argv));
   } catch (const std::exception& e) {
-    std::cerr << "ilsa_smooth: error: " << e.what() << "\n";
+    std::cerr << "ilsa_smooth: error: " << in_flag_terms(e.what()) << "\n";
     return 1;
   }
 }

@@ -1,5 +1,6 @@
-# The ilsa_smooth tool on bad input: a one-line error on stderr, a non-zero
-# exit status, and no output file. Run with -DTOOL=... -DWORK=... -DDATA=...
+# The ilsa_smooth tool: on bad input or flags a one-line error on stderr, a
+# non-zero exit status and no output file; then each flag and message.
+# Run with -DTOOL=... -DWORK=... -DDATA=... -DVERSION=...
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 file(WRITE "${WORK}/garbage.off" "this is not a mesh\n")
@@ -7,15 +8,21 @@ file(WRITE "${WORK}/quads.off" "OFF\n6 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2
 file(WRITE "${WORK}/nan.off" "OFF\n4 2 0\n0 0 0\n1 0 0\nnan 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")
 
 set(failures 0)
-function(expect_failure name)
+# expect_failure(name REGEX args...): the error message must match REGEX; an
+# error found before smoothing must come before any quality figure is printed.
+function(expect_failure name regex)
   set(output "${WORK}/${name}-out.off")
   execute_process(COMMAND "${TOOL}" ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   string(STRIP "${err}" err)
   string(REGEX MATCHALL "\n" newlines "${err}")
   list(LENGTH newlines extra_lines)
-  if(status EQUAL 0 OR NOT err MATCHES "^ilsa_smooth: error: " OR extra_lines GREATER 0 OR EXISTS "${output}"
-     OR EXISTS "${WORK}/${name}-out.ilsa-partial.off")
-    message(SEND_ERROR "${name}: status '${status}', stderr '${err}'")
+  set(printed_quality FALSE)
+  if(out MATCHES "before:" AND NOT name STREQUAL "unwritable")
+    set(printed_quality TRUE)
+  endif()
+  if(status EQUAL 0 OR NOT err MATCHES "^ilsa_smooth: error: " OR NOT err MATCHES "${regex}" OR extra_lines GREATER 0
+     OR EXISTS "${output}" OR EXISTS "${WORK}/${name}-out.ilsa-partial.off" OR printed_quality)
+    message(SEND_ERROR "${name}: status '${status}', stderr '${err}', stdout '${out}'")
     math(EXPR failures "${failures} + 1")
     set(failures ${failures} PARENT_SCOPE)
   else()
@@ -23,15 +30,111 @@ function(expect_failure name)
   endif()
 endfunction()
 
-expect_failure(missing "${WORK}/does-not-exist.off" "${WORK}/missing-out.off")
-expect_failure(garbage "${WORK}/garbage.off" "${WORK}/garbage-out.off")
-expect_failure(quads "${WORK}/quads.off" "${WORK}/quads-out.off")
-expect_failure(nan "${WORK}/nan.off" "${WORK}/nan-out.off")
-expect_failure(bad_mu "${DATA}/sphere_low.off" "${WORK}/bad_mu-out.off" --mu -1)
-expect_failure(bad_number "${DATA}/sphere_low.off" "${WORK}/bad_number-out.off" --iterations ten)
-expect_failure(bad_worst "${DATA}/sphere_low.off" "${WORK}/bad_worst-out.off" --worst -2)
-expect_failure(unknown_option "${DATA}/sphere_low.off" "${WORK}/unknown_option-out.off" --frobnicate)
-expect_failure(unwritable "${DATA}/sphere_low.off" "${WORK}/no-such-dir/unwritable-out.off")
+function(fail what)
+  message(SEND_ERROR "${what}")
+  math(EXPR failures "${failures} + 1")
+  set(failures ${failures} PARENT_SCOPE)
+endfunction()
+
+expect_failure(missing "cannot read" "${WORK}/does-not-exist.off" "${WORK}/missing-out.off")
+expect_failure(garbage "cannot read" "${WORK}/garbage.off" "${WORK}/garbage-out.off")
+expect_failure(quads "2 faces that are not triangles.*--triangulate" "${WORK}/quads.off" "${WORK}/quads-out.off")
+expect_failure(nan "non-finite|cannot read" "${WORK}/nan.off" "${WORK}/nan-out.off")
+expect_failure(bad_number "--iterations expects a number" "${DATA}/sphere_low.off" "${WORK}/bad_number-out.off"
+               --iterations ten)
+expect_failure(bad_worst "--worst expects a non-negative whole number" "${DATA}/sphere_low.off"
+               "${WORK}/bad_worst-out.off" --worst -2)
+expect_failure(unknown_option "unknown option '--frobnicate'" "${DATA}/sphere_low.off"
+               "${WORK}/unknown_option-out.off" --frobnicate=3)
+expect_failure(unwritable "cannot write" "${DATA}/sphere_low.off" "${WORK}/no-such-dir/unwritable-out.off")
+expect_failure(switch_value "--verbose takes no value" "${DATA}/sphere_low.off" "${WORK}/switch_value-out.off"
+               --verbose=1)
+expect_failure(missing_value "--mu expects a value" "${DATA}/sphere_low.off" "${WORK}/missing_value-out.off" --mu)
+expect_failure(bad_report "--report expects auto, summary or full" "${DATA}/sphere_low.off"
+               "${WORK}/bad_report-out.off" --report=some)
+expect_failure(color_not_ply "--color-by-quality writes colours to a PLY file" "${DATA}/sphere_low.off"
+               "${WORK}/color_not_ply-out.off" --color-by-quality)
+expect_failure(color_no_output "--color-by-type writes colours to a PLY file" "${DATA}/sphere_low.off"
+               --color-by-type)
+# Values the library rejects: the message names the flag, not the library's parameter.
+foreach(case "mu;--mu=-1" "relax1;--relax1=0" "relax2;--relax2;2" "wl;--wl=-1" "wa;--wa;-1"
+             "feature-angle;--feature-angle=190" "kink-angle;--kink-angle=-3" "quality-floor;--quality-floor=1"
+             "fidelity-tolerance;--fidelity-tolerance=0" "min-gain;--min-gain=-1" "iterations;--iterations=200000"
+             "relaxation-steps;--relaxation-steps=0")
+  list(GET case 0 flag)
+  list(REMOVE_AT case 0)
+  expect_failure(range_${flag} "ILSA: --${flag} must be" "${DATA}/sphere_low.off" "${WORK}/range_${flag}-out.off"
+                 ${case})
+endforeach()
+
+# A tool run; sets out, err and status in the caller.
+macro(run_tool)
+  execute_process(COMMAND "${TOOL}" ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+endmacro()
+
+# --option=value is --option value: the same output file.
+run_tool("${DATA}/fandisk.off" "${WORK}/spaced.off" --iterations 3 --feature-angle 30 --no-progress)
+run_tool("${DATA}/fandisk.off" "${WORK}/equals.off" --iterations=3 --feature-angle=30 --no-progress)
+execute_process(COMMAND "${CMAKE_COMMAND}" -E compare_files "${WORK}/spaced.off" "${WORK}/equals.off"
+                RESULT_VARIABLE different)
+if(NOT status EQUAL 0 OR different)
+  fail("--option=value: status '${status}', files differ: '${different}'")
+endif()
+# Without OUTPUT nothing is written, and the tool says so.
+run_tool("${DATA}/sphere_low.off" --iterations 1 --no-progress)
+if(NOT status EQUAL 0 OR NOT out MATCHES "nothing written: no OUTPUT file given\n$")
+  fail("no OUTPUT: status '${status}', stdout '${out}'")
+endif()
+# --triangulate splits the quads, then smooths: 4 triangles written.
+run_tool("${WORK}/quads.off" "${WORK}/triangulated.off" --triangulate)
+file(STRINGS "${WORK}/triangulated.off" header LIMIT_COUNT 2)
+list(GET header 1 counts)
+if(NOT status EQUAL 0 OR NOT out MATCHES "triangulated: 2 faces split, 4 triangles" OR NOT counts MATCHES "^6 4 ")
+  fail("--triangulate: status '${status}', counts '${counts}', stdout '${out}'")
+endif()
+# Colours: a PLY with face colours (by q) and vertex colours (by type).
+run_tool("${DATA}/fandisk.off" "${WORK}/colored.ply" --iterations 2 --color-by-quality --color-by-type)
+file(READ "${WORK}/colored.ply" ply LIMIT 600)
+if(NOT status EQUAL 0
+   OR NOT ply MATCHES "element vertex 6475\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red"
+   OR NOT ply MATCHES "element face 12946\nproperty list uchar int vertex_indices\nproperty uchar red")
+  fail("--color-by-quality/--color-by-type: status '${status}', header '${ply}'")
+endif()
+# --report: summary skips the Hausdorff distance, full computes it, auto is full on a small mesh.
+foreach(report summary full auto)
+  run_tool("${DATA}/sphere_low.off" --iterations 1 --report=${report})
+  if(report STREQUAL "summary")
+    set(expected "Hausdorff not computed \\(--report full\\)")
+  else()
+    set(expected "Hausdorff [0-9]\\.[0-9]+e-0[0-9]")
+  endif()
+  if(NOT status EQUAL 0 OR NOT out MATCHES "${expected}")
+    fail("--report ${report}: status '${status}', stdout '${out}'")
+  endif()
+endforeach()
+# --progress: one line per iteration on stderr; --no-progress: nothing there.
+run_tool("${DATA}/sphere_low.off" --iterations 2 --min-gain 0 --progress)
+if(NOT status EQUAL 0 OR NOT err MATCHES "^\rILSA iteration 1 of at most 2\rILSA iteration 2 of at most 2\n$")
+  fail("--progress: status '${status}', stderr '${err}'")
+endif()
+run_tool("${DATA}/sphere_low.off" --iterations 2 --no-progress)
+if(NOT status EQUAL 0 OR NOT err STREQUAL "")
+  fail("--no-progress: status '${status}', stderr '${err}'")
+endif()
+# --help lists the formats and --version; --version prints the project's version.
+run_tool(--help)
+if(NOT status EQUAL 0 OR NOT out MATCHES "\\.off \\.obj \\.ply \\.stl" OR NOT out MATCHES "--version")
+  fail("--help: status '${status}', stdout '${out}'")
+endif()
+run_tool(--version)
+if(NOT status EQUAL 0 OR NOT out MATCHES "^ilsa_smooth ${VERSION} \\(CGAL [0-9.]+\\)\n$")
+  fail("--version: status '${status}', stdout '${out}', expected version '${VERSION}'")
+endif()
+# STL holds 32-bit floats: the tool says so when it writes one.
+run_tool("${DATA}/sphere_low.off" "${WORK}/sphere.stl" --iterations 1)
+if(NOT status EQUAL 0 OR NOT out MATCHES "written: [^\n]*sphere.stl \\(STL stores 32-bit floats")
+  fail(".stl: status '${status}', stdout '${out}'")
+endif()
 
 # And a run that succeeds writes the output, with every vertex.
 execute_process(COMMAND "${TOOL}" "${DATA}/sphere_low.off" "${WORK}/ok.off" --iterations 2 RESULT_VARIABLE status)
