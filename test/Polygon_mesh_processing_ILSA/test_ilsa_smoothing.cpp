@@ -1,4 +1,4 @@
-// Smoothing invariants (spec goal): fixed vertices bit-identical, ridge
+// Smoothing invariants (the promises of the reference manual): fixed vertices bit-identical, ridge
 // vertices on their crease, every vertex on the input surface, no flipped
 // face, better mean quality; planar grids stay planar (also without the
 // length term, which switches the penalty solve to SVD); Surface_mesh and
