@@ -15,6 +15,19 @@
 // - with projection: every vertex on the input surface.
 // A quarter of the cases leave the flip check as the only guard (quality floor
 // 0, worsening moves accepted, no fidelity bound).
+// A third of the cases also smooth a transformed copy of the mesh:
+// - scaled by a power of two (2^-20 to 2^20): every operation of the package
+//   on its normalised coordinates is then the same, so the result mapped back
+//   must be the untransformed one, bit for bit;
+// - or scaled by 1e-6 to 1e6, moved by up to 1e7 times its size and, without a
+//   fidelity bound, rotated (with one, a rotation changes the bounding box the
+//   tolerance is relative to): its input carries new rounding, and a move whose
+//   acceptance test sits within that rounding of its threshold may go the other
+//   way, so the points are not compared; the result must keep the promises
+//   that do not depend on the rounding (no NaN, fixed vertices bit-identical, no
+//   flipped face with the safety check, on the input surface up to the
+//   rounding of the transformed coordinates), and the test reports how far the
+//   result mapped back is from the untransformed one (user manual, "Bad Input").
 //
 // ILSA_FUZZ_CASES (environment) sets the number of cases (the default is the
 // short CI run), ILSA_FUZZ_FIRST the first case: case N is the same in every
@@ -71,7 +84,8 @@ int main() {
 
   std::uniform_real_distribution<double> unit(0., 1.);
   const double unbounded = std::numeric_limits<double>::infinity();
-  int failures = 0, flip_only = 0;
+  int failures = 0, flip_only = 0, transformed = 0, transformed_elsewhere = 0;
+  double worst_transformed_difference = 0; // of the copies not scaled by a power of two
   for (int c = first; c < first + cases; ++c) {
     std::mt19937 rng(2026u + unsigned(c));
     const std::size_t which = std::size_t(c) % meshes.size();
@@ -161,20 +175,92 @@ int main() {
       run_both(np.ilsa_quality_floor(floor));
     const bool same_in_parallel = points_of(parallel) == points_of(m);
 
+    // The vertex types the run used.
+    auto classify = [&](const Surface_mesh& input, std::map<vd, PMP::ILSA_vertex_type>& types) {
+      const auto classification = CGAL::parameters::ilsa_feature_angle(angle)
+                                      .ilsa_fix_unattached_candidates(fix)
+                                      .ilsa_crease_kink_angle(kink)
+                                      .relax_constraints(relax)
+                                      .vertex_is_constrained_map(boost::make_assoc_property_map(constrained_vertices));
+      if (use_edge_map)
+        PMP::classify_vertices_ilsa(
+            input, boost::make_assoc_property_map(types),
+            classification.edge_is_constrained_map(boost::make_assoc_property_map(constrained_edges)));
+      else
+        PMP::classify_vertices_ilsa(input, boost::make_assoc_property_map(types), classification);
+    };
+
+    // The same smoothing of a transformed copy (see the top of this file).
+    bool transformed_ok = true;
+    double transformed_difference = 0, rounding_of_copy = 0;
+    if (draw(1. / 3.)) {
+      const bool exact = draw(0.5);
+      const double diagonal = bbox_diagonal(original);
+      const double scale = exact ? std::ldexp(1., -20 + int(41 * unit(rng))) : std::pow(10., -6 + 12 * unit(rng));
+      const double offset_size = exact ? 0. : std::pow(10., 7 * unit(rng)) * scale * diagonal;
+      const K::Vector_3 offset(offset_size * (2 * unit(rng) - 1), offset_size * (2 * unit(rng) - 1),
+                               offset_size * (2 * unit(rng) - 1));
+      // A uniformly random rotation (unit quaternion), only without the fidelity bound.
+      double a = 1, b = 0, cq = 0, d = 0;
+      if (!exact && (!std::isfinite(tolerance) || !safety)) {
+        std::normal_distribution<double> normal;
+        a = normal(rng), b = normal(rng), cq = normal(rng), d = normal(rng);
+        const double n = std::sqrt(a * a + b * b + cq * cq + d * d);
+        a /= n, b /= n, cq /= n, d /= n;
+      }
+      const double R[3][3] = {{a * a + b * b - cq * cq - d * d, 2 * (b * cq - a * d), 2 * (b * d + a * cq)},
+                              {2 * (b * cq + a * d), a * a - b * b + cq * cq - d * d, 2 * (cq * d - a * b)},
+                              {2 * (b * d - a * cq), 2 * (cq * d + a * b), a * a - b * b - cq * cq + d * d}};
+      Surface_mesh moved_input = original;
+      for (auto v : vertices(moved_input)) {
+        const Point& p = original.point(v);
+        const double x[3] = {p.x(), p.y(), p.z()};
+        double y[3];
+        for (int i = 0; i < 3; ++i) y[i] = scale * (R[i][0] * x[0] + R[i][1] * x[1] + R[i][2] * x[2]) + offset[i];
+        moved_input.point(v) = Point(y[0], y[1], y[2]);
+      }
+      Surface_mesh moved = moved_input;
+      if (default_floor)
+        run(moved, CGAL::Sequential_tag(), np);
+      else
+        run(moved, CGAL::Sequential_tag(), np.ilsa_quality_floor(floor));
+      for (auto v : vertices(moved)) {
+        const Point& p = moved.point(v);
+        const double y[3] = {(p.x() - offset.x()) / scale, (p.y() - offset.y()) / scale, (p.z() - offset.z()) / scale};
+        const Point back(R[0][0] * y[0] + R[1][0] * y[1] + R[2][0] * y[2],
+                         R[0][1] * y[0] + R[1][1] * y[1] + R[2][1] * y[2],
+                         R[0][2] * y[0] + R[1][2] * y[1] + R[2][2] * y[2]);
+        transformed_difference =
+            (std::max)(transformed_difference, std::sqrt(CGAL::squared_distance(back, m.point(v))) / diagonal);
+      }
+      ++transformed;
+      if (exact) {
+        transformed_ok = transformed_difference == 0;
+      } else {
+        // Rounding of the transformed coordinates, relative to the diagonal.
+        rounding_of_copy = std::ldexp(1., -53) * (offset_size / (scale * diagonal) + 1);
+        std::map<vd, PMP::ILSA_vertex_type> moved_types;
+        classify(moved_input, moved_types);
+        for (auto v : vertices(moved)) {
+          const Point& p = moved.point(v);
+          transformed_ok = transformed_ok && std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
+          const bool fixed = moved_types[v] == PMP::ILSA_vertex_type::Corner ||
+                             moved_types[v] == PMP::ILSA_vertex_type::Boundary || !in_range.count(v);
+          transformed_ok = transformed_ok && !(fixed && !(p == moved_input.point(v)));
+        }
+        const auto g =
+            PMP::mesh_fidelity_ilsa(moved_input, moved, CGAL::parameters::ilsa_compute_hausdorff_distance(false));
+        if (safety) transformed_ok = transformed_ok && g.number_of_flipped_faces == 0;
+        if (project) transformed_ok = transformed_ok && g.max_vertex_distance <= 1e-9 + 8 * rounding_of_copy;
+        // How far the result is from the untransformed one: rounding, or a decision that went the other way.
+        if (transformed_difference > 1e3 * rounding_of_copy * (iterations + 1) + 1e-13) ++transformed_elsewhere;
+        worst_transformed_difference = (std::max)(worst_transformed_difference, transformed_difference);
+      }
+    }
     // Fixed vertices: corners and boundary of the same classification, and
     // the vertices outside the range.
     std::map<vd, PMP::ILSA_vertex_type> types;
-    const auto classification = CGAL::parameters::ilsa_feature_angle(angle)
-                                    .ilsa_fix_unattached_candidates(fix)
-                                    .ilsa_crease_kink_angle(kink)
-                                    .relax_constraints(relax)
-                                    .vertex_is_constrained_map(boost::make_assoc_property_map(constrained_vertices));
-    if (use_edge_map)
-      PMP::classify_vertices_ilsa(
-          original, boost::make_assoc_property_map(types),
-          classification.edge_is_constrained_map(boost::make_assoc_property_map(constrained_edges)));
-    else
-      PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types), classification);
+    classify(original, types);
     std::size_t fixed_moved = 0, non_finite = 0;
     for (auto v : vertices(m)) {
       const Point& p = m.point(v);
@@ -195,7 +281,7 @@ int main() {
     const double effective_floor = monotone ? 1. : default_floor ? (std::max)(0.5, before.min_aspect_ratio) : floor;
     const bool kept_minimum = after.min_aspect_ratio >= (std::min)(before.min_aspect_ratio, effective_floor) - 1e-12;
     const double rounding = 1e-12; // of the diagonal: the write-back of normalised coordinates
-    bool ok = same_in_parallel && non_finite == 0 && fixed_moved == 0;
+    bool ok = same_in_parallel && non_finite == 0 && fixed_moved == 0 && transformed_ok;
     if (safety) {
       ok = ok && f.number_of_flipped_faces == 0 && !collapsed && kept_minimum;
       if (std::isfinite(tolerance)) ok = ok && f.max_crease_deviation <= tolerance + rounding;
@@ -213,11 +299,15 @@ int main() {
                 << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
                 << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
                 << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
-                << ", parallel run identical " << same_in_parallel << std::endl;
+                << ", parallel run identical " << same_in_parallel << ", transformed copy: promises kept "
+                << transformed_ok << ", off by " << transformed_difference << " (input rounding " << rounding_of_copy
+                << ")" << std::endl;
     }
   }
-  std::cout << "test_ilsa_fuzz: " << cases << " cases (" << flip_only << " with the flip check as the only guard), "
-            << failures << " failures" << std::endl;
+  std::cout << "test_ilsa_fuzz: " << cases << " cases (" << flip_only << " with the flip check as the only guard, "
+            << transformed << " also transformed, " << transformed_elsewhere
+            << " of them with vertices beyond rounding of the untransformed result, by at most "
+            << worst_transformed_difference << " of the diagonal), " << failures << " failures" << std::endl;
   ILSA_CHECK(failures == 0);
   return 0;
 }
