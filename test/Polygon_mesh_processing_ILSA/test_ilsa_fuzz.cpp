@@ -15,6 +15,9 @@
 // - with projection: every vertex on the input surface.
 // A quarter of the cases leave the flip check as the only guard (quality floor
 // 0, worsening moves accepted, no fidelity bound).
+// Also always: the connectivity is unchanged; in a fifth of the cases a
+// `callback` stops the run, which must end in time, the callback having seen
+// each iteration run.
 // A third of the cases also smooth a transformed copy of the mesh:
 // - scaled by a power of two (2^-20 to 2^20): every operation of the package
 //   on its normalised coordinates is then the same, so the result mapped back
@@ -136,6 +139,21 @@ int main() {
     if (use_edge_map) PMP::detect_sharp_edges(original, edge_angle, boost::make_assoc_property_map(constrained_edges));
     std::set<vd> in_range(range.begin(), range.end());
 
+    // A fifth of the cases stop through the callback, after the iteration that
+    // reaches `stop_after` (drawn from a generator of its own, so that the
+    // other draws of each case stay as they were).
+    std::mt19937 callback_rng(7919u + unsigned(c));
+    const double stop_after = unit(callback_rng) < 0.2 ? unit(callback_rng) : 2.;
+    std::size_t callback_calls = 0; // of the sequential run
+    const std::function<bool(double)> stop_at = [stop_after](double advancement) { return advancement < stop_after; };
+    // The iterations the stop allows: the first k with k / iterations >= stop_after.
+    std::size_t allowed = iterations;
+    for (std::size_t k = 1; k <= iterations; ++k)
+      if (double(k) / double(iterations) >= stop_after) {
+        allowed = k;
+        break;
+      }
+
     auto np = CGAL::parameters::number_of_iterations(iterations)
                   .number_of_relaxation_steps(steps)
                   .ilsa_relaxation(relax1)
@@ -153,20 +171,22 @@ int main() {
                   .do_project(project)
                   .use_safety_constraints(safety)
                   .relax_constraints(relax)
-                  .vertex_is_constrained_map(boost::make_assoc_property_map(constrained_vertices));
+                  .vertex_is_constrained_map(boost::make_assoc_property_map(constrained_vertices))
+                  .callback(stop_at);
     // Sequential, and in parallel (with TBB), which must give the same points.
     Surface_mesh m = original, parallel = original;
     auto run = [&](Surface_mesh& x, auto tag, const auto& parameters) {
       using Tag = decltype(tag);
       // `range` and the maps hold descriptors of `original`: a Surface_mesh copy has the same ones.
       if (use_edge_map)
-        PMP::smooth_surface_mesh_ilsa<Tag>(
+        return PMP::smooth_surface_mesh_ilsa<Tag>(
             range, x, parameters.edge_is_constrained_map(boost::make_assoc_property_map(constrained_edges)));
-      else
-        PMP::smooth_surface_mesh_ilsa<Tag>(range, x, parameters);
+      return PMP::smooth_surface_mesh_ilsa<Tag>(range, x, parameters);
     };
+    PMP::ILSA_statistics statistics;
     auto run_both = [&](const auto& parameters) {
-      run(m, CGAL::Sequential_tag(), parameters);
+      const std::function<bool(double)> counted = [&](double a) { return ++callback_calls, stop_at(a); };
+      statistics = run(m, CGAL::Sequential_tag(), parameters.callback(counted));
       run(parallel, CGAL::Parallel_if_available_tag(), parameters);
     };
     if (default_floor)
@@ -281,7 +301,16 @@ int main() {
     const double effective_floor = monotone ? 1. : default_floor ? (std::max)(0.5, before.min_aspect_ratio) : floor;
     const bool kept_minimum = after.min_aspect_ratio >= (std::min)(before.min_aspect_ratio, effective_floor) - 1e-12;
     const double rounding = 1e-12; // of the diagonal: the write-back of normalised coordinates
-    bool ok = same_in_parallel && non_finite == 0 && fixed_moved == 0 && transformed_ok;
+    // The connectivity is the input's; the callback saw every iteration run and stopped the run in time.
+    bool same_faces = true;
+    for (auto fa = faces(original).begin(), fb = faces(m).begin(); fa != faces(original).end(); ++fa, ++fb) {
+      auto ha = halfedge(*fa, original), hb = halfedge(*fb, m);
+      for (int k = 0; k < 3; ++k, ha = next(ha, original), hb = next(hb, m))
+        same_faces = same_faces && target(ha, original) == target(hb, m);
+    }
+    const bool callback_ok =
+        callback_calls == statistics.number_of_iterations && statistics.number_of_iterations <= allowed;
+    bool ok = same_in_parallel && non_finite == 0 && fixed_moved == 0 && transformed_ok && same_faces && callback_ok;
     if (safety) {
       ok = ok && f.number_of_flipped_faces == 0 && !collapsed && kept_minimum;
       if (std::isfinite(tolerance)) ok = ok && f.max_crease_deviation <= tolerance + rounding;
@@ -299,9 +328,11 @@ int main() {
                 << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
                 << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
                 << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
-                << ", parallel run identical " << same_in_parallel << ", transformed copy: promises kept "
-                << transformed_ok << ", off by " << transformed_difference << " (input rounding " << rounding_of_copy
-                << ")" << std::endl;
+                << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
+                << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
+                << statistics.number_of_iterations << " iterations run, " << allowed << " allowed"
+                << ", transformed copy: promises kept " << transformed_ok << ", off by " << transformed_difference
+                << " (input rounding " << rounding_of_copy << ")" << std::endl;
     }
   }
   std::cout << "test_ilsa_fuzz: " << cases << " cases (" << flip_only << " with the flip check as the only guard, "
