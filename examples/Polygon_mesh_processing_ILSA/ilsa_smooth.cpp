@@ -294,10 +294,33 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
   }
 }
 
+// The named parameters of the flags.
+auto smoothing_parameters(const Options& o, const std::function<bool(double)>& callback) {
+  return CGAL::parameters::number_of_iterations(o.iterations)
+      .number_of_relaxation_steps(o.relaxation_steps)
+      .ilsa_relaxation(o.relax1)
+      .ilsa_penalty_relaxation(o.relax2)
+      .ilsa_penalty_mu(o.mu)
+      .ilsa_length_weight(o.wl)
+      .ilsa_area_weight(o.wa)
+      .ilsa_feature_angle(o.feature_angle)
+      .ilsa_fix_unattached_candidates(o.fix_unattached)
+      .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
+      .ilsa_minimum_quality_gain(o.minimum_gain)
+      .do_project(o.project)
+      .use_safety_constraints(o.safety)
+      .ilsa_quality_monotone(o.monotone)
+      .ilsa_reject_worsening_moves(o.reject_worsening)
+      .ilsa_fidelity_tolerance(o.fidelity_tolerance)
+      .callback(callback)
+      .verbose(o.verbose);
+}
+
 // The library checks its parameters before it reads the mesh: an empty mesh
 // tests the flags' values before the input is read and anything printed.
-template <class Parameters> void check_parameters(const Options& o, const Parameters& np) {
+void check_parameters(const Options& o) {
   Mesh empty;
+  const auto np = smoothing_parameters(o, std::function<bool(double)>());
   try {
     if (o.quality_floor)
       PMP::smooth_surface_mesh_ilsa(empty, np.ilsa_quality_floor(*o.quality_floor));
@@ -310,17 +333,7 @@ template <class Parameters> void check_parameters(const Options& o, const Parame
 
 int run(const Options& o) {
   Mesh mesh;
-  check_parameters(o, CGAL::parameters::number_of_iterations(o.iterations)
-                          .number_of_relaxation_steps(o.relaxation_steps)
-                          .ilsa_relaxation(o.relax1)
-                          .ilsa_penalty_relaxation(o.relax2)
-                          .ilsa_penalty_mu(o.mu)
-                          .ilsa_length_weight(o.wl)
-                          .ilsa_area_weight(o.wa)
-                          .ilsa_feature_angle(o.feature_angle)
-                          .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
-                          .ilsa_minimum_quality_gain(o.minimum_gain)
-                          .ilsa_fidelity_tolerance(o.fidelity_tolerance));
+  check_parameters(o);
   if (!CGAL::IO::read_polygon_mesh(o.input, mesh))
     throw std::runtime_error("cannot read a polygon mesh from '" + o.input + "'");
   if (num_faces(mesh) == 0) throw std::runtime_error("'" + o.input + "' has no faces");
@@ -349,24 +362,7 @@ int run(const Options& o) {
     return true;
   };
   const auto start = std::chrono::steady_clock::now();
-  const auto np = CGAL::parameters::number_of_iterations(o.iterations)
-                      .number_of_relaxation_steps(o.relaxation_steps)
-                      .ilsa_relaxation(o.relax1)
-                      .ilsa_penalty_relaxation(o.relax2)
-                      .ilsa_penalty_mu(o.mu)
-                      .ilsa_length_weight(o.wl)
-                      .ilsa_area_weight(o.wa)
-                      .ilsa_feature_angle(o.feature_angle)
-                      .ilsa_fix_unattached_candidates(o.fix_unattached)
-                      .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
-                      .ilsa_minimum_quality_gain(o.minimum_gain)
-                      .do_project(o.project)
-                      .use_safety_constraints(o.safety)
-                      .ilsa_quality_monotone(o.monotone)
-                      .ilsa_reject_worsening_moves(o.reject_worsening)
-                      .ilsa_fidelity_tolerance(o.fidelity_tolerance)
-                      .callback(progress ? show_progress : std::function<bool(double)>())
-                      .verbose(o.verbose);
+  const auto np = smoothing_parameters(o, progress ? show_progress : std::function<bool(double)>());
   // Sequential with one thread, TBB otherwise (when the package was built with it).
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, o.threads);

@@ -72,6 +72,15 @@ macro(run_tool)
   execute_process(COMMAND "${TOOL}" ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 endmacro()
 
+# expect_success(what STREAM REGEX args...): the run succeeds and its out or err matches REGEX.
+function(expect_success what stream regex)
+  run_tool(${ARGN})
+  if(NOT status EQUAL 0 OR NOT ${stream} MATCHES "${regex}")
+    fail("${what}: status '${status}', stdout '${out}', stderr '${err}'")
+    set(failures ${failures} PARENT_SCOPE)
+  endif()
+endfunction()
+
 # --option=value is --option value: the same output file.
 run_tool("${DATA}/fandisk.off" "${WORK}/spaced.off" --iterations 3 --feature-angle 30 --no-progress)
 run_tool("${DATA}/fandisk.off" "${WORK}/equals.off" --iterations=3 --feature-angle=30 --no-progress)
@@ -81,10 +90,8 @@ if(NOT status EQUAL 0 OR different)
   fail("--option=value: status '${status}', files differ: '${different}'")
 endif()
 # Without OUTPUT nothing is written, and the tool says so.
-run_tool("${DATA}/sphere_low.off" --iterations 1 --no-progress)
-if(NOT status EQUAL 0 OR NOT out MATCHES "nothing written: no OUTPUT file given\n$")
-  fail("no OUTPUT: status '${status}', stdout '${out}'")
-endif()
+expect_success("no OUTPUT" out "nothing written: no OUTPUT file given\n$" "${DATA}/sphere_low.off" --iterations 1
+               --no-progress)
 # --triangulate splits the quads, then smooths: 4 triangles written.
 run_tool("${WORK}/quads.off" "${WORK}/triangulated.off" --triangulate)
 file(STRINGS "${WORK}/triangulated.off" header LIMIT_COUNT 2)
@@ -101,40 +108,22 @@ if(NOT status EQUAL 0
   fail("--color-by-quality/--color-by-type: status '${status}', header '${ply}'")
 endif()
 # --report: summary skips the Hausdorff distance, full computes it, auto is full on a small mesh.
-foreach(report summary full auto)
-  run_tool("${DATA}/sphere_low.off" --iterations 1 --report=${report})
-  if(report STREQUAL "summary")
-    set(expected "Hausdorff not computed \\(--report full\\)")
-  else()
-    set(expected "Hausdorff [0-9]\\.[0-9]+e-0[0-9]")
-  endif()
-  if(NOT status EQUAL 0 OR NOT out MATCHES "${expected}")
-    fail("--report ${report}: status '${status}', stdout '${out}'")
-  endif()
+expect_success("--report summary" out "Hausdorff not computed \\(--report full\\)" "${DATA}/sphere_low.off"
+               --iterations 1 --report=summary)
+foreach(report full auto)
+  expect_success("--report ${report}" out "Hausdorff [0-9]\\.[0-9]+e-0[0-9]" "${DATA}/sphere_low.off" --iterations 1
+                 --report=${report})
 endforeach()
 # --progress: one line per iteration on stderr; --no-progress: nothing there.
-run_tool("${DATA}/sphere_low.off" --iterations 2 --min-gain 0 --progress)
-if(NOT status EQUAL 0 OR NOT err MATCHES "^\rILSA iteration 1 of at most 2\rILSA iteration 2 of at most 2\n$")
-  fail("--progress: status '${status}', stderr '${err}'")
-endif()
-run_tool("${DATA}/sphere_low.off" --iterations 2 --no-progress)
-if(NOT status EQUAL 0 OR NOT err STREQUAL "")
-  fail("--no-progress: status '${status}', stderr '${err}'")
-endif()
-# --help lists the formats and --version; --version prints the project's version.
-run_tool(--help)
-if(NOT status EQUAL 0 OR NOT out MATCHES "\\.off \\.obj \\.ply \\.stl" OR NOT out MATCHES "--version")
-  fail("--help: status '${status}', stdout '${out}'")
-endif()
-run_tool(--version)
-if(NOT status EQUAL 0 OR NOT out MATCHES "^ilsa_smooth ${VERSION} \\(CGAL [0-9.]+\\)\n$")
-  fail("--version: status '${status}', stdout '${out}', expected version '${VERSION}'")
-endif()
+expect_success("--progress" err "^\rILSA iteration 1 of at most 2\rILSA iteration 2 of at most 2\n$"
+               "${DATA}/sphere_low.off" --iterations 2 --min-gain 0 --progress)
+expect_success("--no-progress" err "^$" "${DATA}/sphere_low.off" --iterations 2 --no-progress)
+# --help lists the formats, then --version; --version prints the project's version.
+expect_success("--help" out "\\.off \\.obj \\.ply \\.stl.*--version" --help)
+expect_success("--version" out "^ilsa_smooth ${VERSION} \\(CGAL [0-9.]+\\)\n$" --version)
 # STL holds 32-bit floats: the tool says so when it writes one.
-run_tool("${DATA}/sphere_low.off" "${WORK}/sphere.stl" --iterations 1)
-if(NOT status EQUAL 0 OR NOT out MATCHES "written: [^\n]*sphere.stl \\(STL stores 32-bit floats")
-  fail(".stl: status '${status}', stdout '${out}'")
-endif()
+expect_success(".stl" out "written: [^\n]*sphere.stl \\(STL stores 32-bit floats" "${DATA}/sphere_low.off"
+               "${WORK}/sphere.stl" --iterations 1)
 
 # And a run that succeeds writes the output, with every vertex.
 execute_process(COMMAND "${TOOL}" "${DATA}/sphere_low.off" "${WORK}/ok.off" --iterations 2 RESULT_VARIABLE status)
