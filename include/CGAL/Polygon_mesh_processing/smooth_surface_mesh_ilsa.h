@@ -296,14 +296,17 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
                                                             constrained_vertices, constrained_edges);
   std::vector<unsigned char> movable(original.number_of_vertices(), 0);
   // The range is checked against the mesh's own descriptors: an index map
-  // cannot be read for a descriptor that is not the mesh's.
-  boost::unordered_map<typename GT::vertex_descriptor, std::size_t> flat_of;
-  flat_of.reserve(vertex_list.size());
-  for (std::size_t i = 0; i < vertex_list.size(); ++i) flat_of.emplace(vertex_list[i], i);
-  for (auto v : vertices) {
-    const auto found = flat_of.find(v);
-    require(found != flat_of.end(), "a vertex of the range is not a vertex of the mesh");
-    movable[found->second] = 1;
+  // cannot be read for a descriptor that is not the mesh's. (A scope of its
+  // own: the map is freed before the smoothing allocates.)
+  {
+    boost::unordered_map<typename GT::vertex_descriptor, std::size_t> flat_of;
+    flat_of.reserve(vertex_list.size());
+    for (std::size_t i = 0; i < vertex_list.size(); ++i) flat_of.emplace(vertex_list[i], i);
+    for (auto v : vertices) {
+      const auto found = flat_of.find(v);
+      require(found != flat_of.end(), "a vertex of the range is not a vertex of the mesh");
+      movable[found->second] = 1;
+    }
   }
 
   // Classify vertices on T_ori (paper §3).
@@ -342,7 +345,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
 
   // T_new := T_ori. `home` is the original face (ridge: sharp edge) each vertex lies on.
   std::vector<Vec3> pos = original.points, next, target(pos.size()), d, face_normals;
-  std::vector<std::size_t> home(pos.size(), ilsa::npos), next_home, moved;
+  std::vector<ilsa::Index> home(pos.size(), ilsa::npos), next_home;
+  std::vector<std::size_t> moved;
   std::vector<unsigned char> guarded(pos.size(), 0);
   for (std::size_t v : neighborhoods.adjustable) home[v] = projector.initial_home(v);
   ilsa::Ilsa_workspace ilsa_workspace;
@@ -379,7 +383,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
       target[v] = pos[v] + d[v];
       const auto r = project(v, target[v], pos[v], home[v]);
       next[v] = r.point;
-      next_home[v] = r.home;
+      next_home[v] = ilsa::Index(r.home);
       guarded[v] = r.guarded;
     });
     moved.clear();

@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -35,16 +36,21 @@ namespace internal {
 namespace ILSA {
 
 using Vec3 = Eigen::Vector3d;
-constexpr std::size_t npos = (std::numeric_limits<std::size_t>::max)();
+/// Index of a vertex, face or edge in the flat mesh: 32 bits, half the memory of
+/// `std::size_t` (build_flat_mesh() rejects a mesh with more elements).
+using Index = std::uint32_t;
+/// No element (a border edge's missing face, no home yet). Compares equal to
+/// itself also after conversion to `std::size_t`.
+constexpr Index npos = (std::numeric_limits<Index>::max)();
 
 /// Compressed adjacency: the items of element `i` are `items[begin[i]] .. items[begin[i+1]-1]`.
 struct Adjacency {
-  std::vector<std::size_t> begin{0};
-  std::vector<std::size_t> items;
+  std::vector<Index> begin{0};
+  std::vector<Index> items;
 
   std::size_t size(std::size_t i) const { return begin[i + 1] - begin[i]; }
-  const std::size_t* first(std::size_t i) const { return items.data() + begin[i]; }
-  const std::size_t* last(std::size_t i) const { return items.data() + begin[i + 1]; }
+  const Index* first(std::size_t i) const { return items.data() + begin[i]; }
+  const Index* last(std::size_t i) const { return items.data() + begin[i + 1]; }
 
   // Builds the adjacency of `n` elements from (element, item) pairs, keeping their order.
   void assign(std::size_t n, const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
@@ -52,21 +58,21 @@ struct Adjacency {
     for (const auto& p : pairs) ++begin[p.first + 1];
     for (std::size_t i = 0; i < n; ++i) begin[i + 1] += begin[i];
     items.resize(pairs.size());
-    std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
-    for (const auto& p : pairs) items[fill[p.first]++] = p.second;
+    std::vector<Index> fill(begin.begin(), begin.end() - 1);
+    for (const auto& p : pairs) items[fill[p.first]++] = Index(p.second);
   }
 };
 
 struct Flat_mesh {
-  std::vector<Vec3> points;                           // normalised coordinates
-  std::vector<std::array<std::size_t, 3>> faces;      // vertex indices, mesh orientation
-  std::vector<std::array<std::size_t, 2>> edges;      // endpoints
-  std::vector<std::array<std::size_t, 2>> edge_faces; // incident faces, npos on a border
-  Adjacency vertex_faces;                             // faces around each vertex
-  Adjacency vertex_neighbors;                         // one-ring vertices
-  Adjacency vertex_edges;                             // edges around each vertex, same order as vertex_neighbors
-  std::vector<unsigned char> on_border;               // endpoint of a border edge
-  std::vector<unsigned char> non_manifold;            // vertex shared by several umbrellas
+  std::vector<Vec3> points;                     // normalised coordinates
+  std::vector<std::array<Index, 3>> faces;      // vertex indices, mesh orientation
+  std::vector<std::array<Index, 2>> edges;      // endpoints
+  std::vector<std::array<Index, 2>> edge_faces; // incident faces, npos on a border
+  Adjacency vertex_faces;                       // faces around each vertex
+  Adjacency vertex_neighbors;                   // one-ring vertices
+  Adjacency vertex_edges;                       // edges around each vertex, same order as vertex_neighbors
+  std::vector<unsigned char> on_border;         // endpoint of a border edge
+  std::vector<unsigned char> non_manifold;      // vertex shared by several umbrellas
   Vec3 center = Vec3::Zero();
   double scale = 1.;
 
@@ -77,7 +83,7 @@ struct Flat_mesh {
 };
 
 /// Twice the area vector of triangle `f` for the positions `pos`.
-inline Vec3 area_vector(const std::vector<Vec3>& pos, const std::array<std::size_t, 3>& f) {
+inline Vec3 area_vector(const std::vector<Vec3>& pos, const std::array<Index, 3>& f) {
   return (pos[f[1]] - pos[f[0]]).cross(pos[f[2]] - pos[f[0]]);
 }
 
@@ -116,7 +122,7 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
 }
 
 /// Unit normal of triangle `f`, or zero for a degenerate triangle.
-inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<std::size_t, 3>& f) {
+inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<Index, 3>& f) {
   const Vec3 n = area_vector(pos, f);
   const double l = n.norm();
   return l > 0 ? Vec3(n / l) : Vec3::Zero();
@@ -193,8 +199,14 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   using face_descriptor = typename GT::face_descriptor;
 
   Flat_mesh m;
+  // Every index, and every item count of an adjacency, must fit an `Index`.
+  auto require_indexable = [](std::size_t n, const char* what) {
+    if (n >= std::size_t(npos))
+      throw ILSA_error(std::string("the mesh has too many ") + what + " (" + std::to_string(n) + "; at most 2^32 - 2)");
+  };
   vertex_list.assign(vertices(tm).begin(), vertices(tm).end());
   const std::size_t nv = vertex_list.size();
+  require_indexable(nv, "vertices");
   number_in_order(vertex_index, vertex_list, "vertex_index_map");
 
   std::vector<Vec3> raw(nv);
@@ -217,14 +229,17 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   for (std::size_t i = 0; i < nv; ++i) m.points[i] = (raw[i] - m.center) / m.scale;
 
   const std::vector<face_descriptor> face_list(faces(tm).begin(), faces(tm).end());
+  require_indexable(3 * face_list.size(), "face corners");
   Flat_indices<FaceIndexMap> face_index{face_index_map, {}};
   number_in_order(face_index, face_list, "face_index_map");
   std::vector<std::pair<std::size_t, std::size_t>> incidences;
+  incidences.reserve(3 * face_list.size());
+  m.faces.reserve(face_list.size());
   for (face_descriptor f : face_list) {
-    std::array<std::size_t, 3> t{};
+    std::array<Index, 3> t{};
     std::size_t k = 0;
     for (vertex_descriptor v : vertices_around_face(halfedge(f, tm), tm)) {
-      if (k < 3) t[k] = vertex_index(v);
+      if (k < 3) t[k] = Index(vertex_index(v));
       ++k;
     }
     if (k != 3)
@@ -244,6 +259,7 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   };
   const std::vector<typename GT::edge_descriptor> graph_edges(edges(tm).begin(), edges(tm).end());
   std::vector<Edge_record> records;
+  require_indexable(2 * graph_edges.size(), "edge ends");
   records.reserve(graph_edges.size());
   for (std::size_t k = 0; k < graph_edges.size(); ++k) {
     auto h = halfedge(graph_edges[k], tm);
@@ -261,11 +277,15 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   edge_list.clear();
   incidences.clear();
   std::vector<std::pair<std::size_t, std::size_t>> vertex_edge_pairs;
+  vertex_edge_pairs.reserve(2 * records.size());
+  m.edges.reserve(records.size());
+  m.edge_faces.reserve(records.size());
+  edge_list.reserve(records.size());
   for (const Edge_record& r : records) {
     if (r.f0 == npos || r.f1 == npos) m.on_border[r.a] = m.on_border[r.b] = 1;
     const std::size_t ei = m.edges.size();
-    m.edges.push_back({r.a, r.b});
-    m.edge_faces.push_back({r.f0, r.f1});
+    m.edges.push_back({Index(r.a), Index(r.b)});
+    m.edge_faces.push_back({Index(r.f0), Index(r.f1)});
     edge_list.push_back(graph_edges[r.descriptor]);
     incidences.emplace_back(r.a, r.b);
     incidences.emplace_back(r.b, r.a);

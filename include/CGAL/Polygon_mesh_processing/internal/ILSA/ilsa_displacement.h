@@ -42,7 +42,7 @@ inline Ilsa_neighborhoods make_ilsa_neighborhoods(const Flat_mesh& m, const Vert
       pairs.emplace_back(v, c.attached_sharp[v][1]);
     } else {
       nb.smooth.push_back(v);
-      for (const std::size_t* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w)
+      for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w)
         pairs.emplace_back(v, *w);
     }
   }

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -34,6 +35,8 @@ namespace internal {
 namespace ILSA {
 
 class Move_safety {
+  using Round = std::uint32_t; // rounds of the check, counted over the whole run
+
 public:
   /// Relative area below which a triangle counts as collapsed: twice its area
   /// under this fraction of its longest edge squared.
@@ -75,7 +78,7 @@ public:
     vertex_now_.assign(m_.number_of_vertices(), 0.);
     vertex_witness_.assign(m_.number_of_vertices(), npos);
     face_witness_.resize(m_.number_of_faces());
-    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) face_witness_[f] = {f, f, f, f};
+    for (Index f = 0; f < m_.number_of_faces(); ++f) face_witness_[f] = {f, f, f, f};
     tries_.assign(m_.number_of_vertices(), 0);
     checked_.assign(m_.number_of_vertices(), 0);
     is_moved_.assign(m_.number_of_vertices(), 0);
@@ -95,11 +98,19 @@ public:
   /// tests of each vertex, the distances at `next` the fidelity tests share,
   /// the fidelity tests, the shortening of the offending moves.
   template <class ConcurrencyTag, class Project>
-  Counts enforce(const std::vector<Vec3>& previous, const std::vector<std::size_t>& previous_home,
+  Counts enforce(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home,
                  const std::vector<Vec3>& target, const std::vector<std::size_t>& moved, std::vector<Vec3>& next,
-                 std::vector<std::size_t>& next_home, const Project& project) {
+                 std::vector<Index>& next_home, const Project& project) {
     for (std::size_t v : moved) tries_[v] = 0, is_moved_[v] = 1;
-    const std::size_t first_round = round_ + 1;
+    // Each round but the last shortens a move, at most halvings_ + 1 times per
+    // moved vertex. If the stamps could overflow in this call, they start again
+    // from 0: stamps of earlier calls only need to be older than this call's.
+    if (std::size_t(round_) + (halvings_ + 2) * (moved.size() + 1) > std::size_t((std::numeric_limits<Round>::max)())) {
+      for (auto* stamps : {&checked_, &face_round_, &deviation_round_, &vertex_round_, &changed_round_, &ring_changed_})
+        std::fill(stamps->begin(), stamps->end(), Round(0));
+      round_ = 0;
+    }
+    const Round first_round = round_ + 1;
     const bool fidelity = std::isfinite(fidelity_tolerance_);
     std::vector<std::size_t> to_check(moved), offenders, faces, vertices, undecided;
     while (!to_check.empty()) {
@@ -107,7 +118,7 @@ public:
       // The faces around the vertices to check: which offend.
       faces.clear();
       for (std::size_t v : to_check)
-        for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+        for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
           if (face_round_[*f] != round_) face_round_[*f] = round_, faces.push_back(*f);
       const bool quality_tests = quality_floor_ > 0 || reject_worsening_;
       parallel_for<ConcurrencyTag>(faces.size(), [&](std::size_t i) {
@@ -123,7 +134,7 @@ public:
       parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
         const std::size_t v = to_check[i];
         bad_[v] = 0;
-        for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+        for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
           if (offends_[*f]) bad_[v] = 1;
         if (bad_[v]) return;
         if (!quality_tests) return;
@@ -157,8 +168,8 @@ public:
             if (!current(vertex_round_[w], ring_changed_[w])) vertex_round_[w] = round_, vertices.push_back(w);
           };
           share(v);
-          for (const std::size_t* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
-          for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+          for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
+          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
             const auto& t = m_.faces[*f];
             const std::size_t changed = (std::max)({changed_round_[t[0]], changed_round_[t[1]], changed_round_[t[2]]});
             if (!current(deviation_round_[*f], changed)) deviation_round_[*f] = round_, faces.push_back(*f);
@@ -185,7 +196,7 @@ public:
           const double t = std::ldexp(1., -int(tries_[v]));
           const auto r = project(v, previous[v] + t * (target[v] - previous[v]), previous[v], previous_home[v]);
           next[v] = r.point;
-          next_home[v] = r.home;
+          next_home[v] = Index(r.home);
         } else {
           next[v] = previous[v];
           next_home[v] = previous_home[v];
@@ -196,15 +207,15 @@ public:
         changed_round_[v] = round_;
         auto ring = [&](std::size_t u) {
           ring_changed_[u] = round_;
-          for (const std::size_t* x = m_.vertex_neighbors.first(u); x != m_.vertex_neighbors.last(u); ++x)
+          for (const Index* x = m_.vertex_neighbors.first(u); x != m_.vertex_neighbors.last(u); ++x)
             ring_changed_[*x] = round_;
         };
         ring(v);
-        for (const std::size_t* u = m_.vertex_neighbors.first(v); u != m_.vertex_neighbors.last(v); ++u) ring(*u);
+        for (const Index* u = m_.vertex_neighbors.first(v); u != m_.vertex_neighbors.last(v); ++u) ring(*u);
       }
       to_check.clear();
       for (std::size_t v : offenders)
-        for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+        for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
           for (std::size_t w : m_.faces[*f])
             if (is_moved_[w] && tries_[w] <= halvings_ && checked_[w] != round_) {
               checked_[w] = round_;
@@ -256,16 +267,16 @@ private:
     auto cuts = [&](std::size_t w) {
       const double now = vertex_now_[w];
       if (!(now > fidelity_tolerance_)) return false;
-      std::size_t witness = vertex_witness_[w];
+      Index witness = vertex_witness_[w];
       return now > vertex_deviation(previous, w, witness);
     };
     if (cuts(v)) return true;
-    for (const std::size_t* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w)
+    for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w)
       if (cuts(*w)) return true;
-    for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+    for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
       const double now = face_now_[*f];
       if (!(now > fidelity_tolerance_)) continue;
-      std::array<std::size_t, 4> witnesses = face_witness_[*f];
+      std::array<Index, 4> witnesses = face_witness_[*f];
       if (now > face_deviation(previous, *f, witnesses)) return true;
     }
     return false;
@@ -278,13 +289,13 @@ private:
   // the tolerance from the smoothed line around them (a bend cut off), and its
   // inner points may not end farther from the input line (a chord across a
   // bend), unless they already were.
-  bool crease_deviates(const std::vector<Vec3>& previous, const std::vector<std::size_t>& previous_home,
-                       const std::vector<Vec3>& next, const std::vector<std::size_t>& next_home, std::size_t v) const {
-    const std::size_t* u = m_.vertex_neighbors.first(v);
-    for (const std::size_t* e = m_.vertex_edges.first(v); e != m_.vertex_edges.last(v); ++e, ++u) {
+  bool crease_deviates(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home,
+                       const std::vector<Vec3>& next, const std::vector<Index>& next_home, std::size_t v) const {
+    const Index* u = m_.vertex_neighbors.first(v);
+    for (const Index* e = m_.vertex_edges.first(v); e != m_.vertex_edges.last(v); ++e, ++u) {
       if (!c_.feature_edge[*e]) continue;
       const std::size_t line = line_of(*e);
-      for (std::size_t w : {v, *u}) {
+      for (std::size_t w : {v, std::size_t(*u)}) {
         if (c_.is_fixed(w)) continue; // keeps its input position, on the line
         const double now = line_vertex_deviation(next, w, line);
         if (now > fidelity_tolerance_ && now > line_vertex_deviation(previous, w, line)) return true;
@@ -319,8 +330,8 @@ private:
   // to the input line `line` where these vertices lie: around the crease edge
   // a moving ridge vertex lies on (`home`), around the input position of
   // another (a ridge vertex outside the vertex range has no home: it does not move).
-  double line_edge_deviation(const std::vector<Vec3>& pos, const std::vector<std::size_t>& home, std::size_t v,
-                             std::size_t u, double t, std::size_t line) const {
+  double line_edge_deviation(const std::vector<Vec3>& pos, const std::vector<Index>& home, std::size_t v, std::size_t u,
+                             double t, std::size_t line) const {
     const Vec3 x = pos[v] + t * (pos[u] - pos[v]);
     double best = std::numeric_limits<double>::infinity();
     auto measure = [&](std::size_t e) {
@@ -338,14 +349,14 @@ private:
 
   // The edges of the feature line `line` at vertex `w`.
   template <class F> void for_each_line_edge(std::size_t w, std::size_t line, F f) const {
-    for (const std::size_t* e = m_.vertex_edges.first(w); e != m_.vertex_edges.last(w); ++e)
+    for (const Index* e = m_.vertex_edges.first(w); e != m_.vertex_edges.last(w); ++e)
       if (c_.feature_edge[*e] && line_of(*e) == line) f(*e);
   }
 
   // Largest distance from the centroid and the edge midpoints of face `f` at
   // `pos` to the input surface around the face's vertices. `witnesses`: for
   // each of these points, the face looked at first (see squared_distance_near()).
-  double face_deviation(const std::vector<Vec3>& pos, std::size_t f, std::array<std::size_t, 4>& witnesses) const {
+  double face_deviation(const std::vector<Vec3>& pos, std::size_t f, std::array<Index, 4>& witnesses) const {
     const auto& t = m_.faces[f];
     const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
     const std::array<Vec3, 4> points{Vec3((a + b + c) / 3.), Vec3((a + b) / 2.), Vec3((b + c) / 2.),
@@ -358,7 +369,7 @@ private:
 
   // Distance from the input position of `w` to the surface around `w` at `pos`;
   // `witness` as in squared_distance_near().
-  double vertex_deviation(const std::vector<Vec3>& pos, std::size_t w, std::size_t& witness) const {
+  double vertex_deviation(const std::vector<Vec3>& pos, std::size_t w, Index& witness) const {
     return std::sqrt(squared_distance_near(m_.points[w], pos, std::array<std::size_t, 1>{w}, witness));
   }
 
@@ -372,9 +383,9 @@ private:
   // looked at first, and is set to the face found in reach: the one that was
   // in reach at the last call for the same point is most often in reach again,
   // vertices move little between two calls, so most scans look at one face.
-  template <std::size_t N>
-  double squared_distance_near(const Vec3& x, const std::vector<Vec3>& pos, const std::array<std::size_t, N>& around,
-                               std::size_t& witness) const {
+  template <class I, std::size_t N>
+  double squared_distance_near(const Vec3& x, const std::vector<Vec3>& pos, const std::array<I, N>& around,
+                               Index& witness) const {
     const double tolerance2 = fidelity_tolerance_ * fidelity_tolerance_;
     const std::size_t first = witness;
     double best = std::numeric_limits<double>::infinity();
@@ -382,19 +393,19 @@ private:
       const auto& t = m_.faces[f];
       best = (std::min)(best, squared_distance_to_triangle(x, pos[t[0]], pos[t[1]], pos[t[2]]));
       if (best > tolerance2) return false;
-      witness = f;
+      witness = Index(f);
       return true;
     };
     if (first != npos && in_reach(first)) return best;
     auto scan = [&](std::size_t u) {
-      for (const std::size_t* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f)
+      for (const Index* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f)
         if (*f != first && in_reach(*f)) return true;
       return false;
     };
     for (std::size_t u : around)
       if (scan(u)) return best;
     for (std::size_t u : around)
-      for (const std::size_t* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
+      for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
         if (scan(*w)) return best;
     return best;
   }
@@ -407,7 +418,7 @@ private:
   // `next` computed in the current round, summed in the same order.
   Star_quality star_quality_now(std::size_t v) const {
     Star_quality q;
-    for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+    for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
       q.worst = (std::min)(q.worst, quality_now_[*f]);
       q.mean += quality_now_[*f];
     }
@@ -419,7 +430,7 @@ private:
   Star_quality star_quality(const std::vector<Vec3>& pos, std::size_t v, const Vec3& at) const {
     auto point = [&](std::size_t w) -> const Vec3& { return w == v ? at : pos[w]; };
     Star_quality q;
-    for (const std::size_t* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+    for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
       const auto& t = m_.faces[*f];
       const double r = triangle_aspect_ratio(point(t[0]), point(t[1]), point(t[2]));
       q.worst = (std::min)(q.worst, r);
@@ -436,20 +447,20 @@ private:
   bool reject_worsening_;
   std::size_t halvings_;
   std::vector<Vec3> reference_;
-  std::vector<unsigned char> offends_;                      // per face, in the current round
-  std::vector<double> quality_now_;                         // per face: its aspect ratio at `next`, likewise
-  std::vector<unsigned char> bad_;                          // per vertex: its move offends, in the current round
-  std::vector<std::size_t> tries_;                          // halvings applied to a vertex's move
-  std::vector<std::size_t> checked_;                        // round in which a vertex was queued for a check
-  std::vector<std::size_t> face_round_;                     // round in which a face's offending flag was computed
-  std::vector<std::size_t> deviation_round_, vertex_round_; // round in which the deviations below were computed
-  std::vector<std::size_t> changed_round_;                  // last round in which a vertex's move changed
-  std::vector<std::size_t> ring_changed_;                   // the same, for any vertex up to two edges away
-  std::vector<double> face_now_, vertex_now_;               // face_deviation / vertex_deviation at `next`
-  std::vector<std::size_t> vertex_witness_;                 // face first looked at by vertex_deviation
-  std::vector<std::array<std::size_t, 4>> face_witness_;    // the same, for each point of face_deviation
+  std::vector<unsigned char> offends_;                // per face, in the current round
+  std::vector<double> quality_now_;                   // per face: its aspect ratio at `next`, likewise
+  std::vector<unsigned char> bad_;                    // per vertex: its move offends, in the current round
+  std::vector<Index> tries_;                          // halvings applied to a vertex's move
+  std::vector<Round> checked_;                        // round in which a vertex was queued for a check
+  std::vector<Round> face_round_;                     // round in which a face's offending flag was computed
+  std::vector<Round> deviation_round_, vertex_round_; // round in which the deviations below were computed
+  std::vector<Round> changed_round_;                  // last round in which a vertex's move changed
+  std::vector<Round> ring_changed_;                   // the same, for any vertex up to two edges away
+  std::vector<double> face_now_, vertex_now_;         // face_deviation / vertex_deviation at `next`
+  std::vector<Index> vertex_witness_;                 // face first looked at by vertex_deviation
+  std::vector<std::array<Index, 4>> face_witness_;    // the same, for each point of face_deviation
   std::vector<unsigned char> is_moved_;
-  std::size_t round_ = 0;
+  Round round_ = 0;
 };
 
 } // namespace ILSA

@@ -73,12 +73,12 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
   // Length term: ∇ = 2 wl (x − mean p_j).
   Eigen::Matrix3d H = 2. * p.length_weight * Eigen::Matrix3d::Identity();
   Vec3 mean = Vec3::Zero();
-  for (const std::size_t* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w) mean += pending(*w);
+  for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w) mean += pending(*w);
   Vec3 r = (2. * p.length_weight / double(m.vertex_neighbors.size(v))) * mean;
 
   // Area term: 2 s(x, a, b) = |e × x + a × b| with e = b − a, so
   // ∇ (β s²) = (β/2) (|e|² I − e eᵀ) x + (β/2) (a × b) × e.
-  for (const std::size_t* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) {
+  for (const Index* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) {
     const auto& t = m.faces[*f];
     const std::size_t k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
     const Vec3 a = pending(t[(k + 1) % 3]), b = pending(t[(k + 2) % 3]);

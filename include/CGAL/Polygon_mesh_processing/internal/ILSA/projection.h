@@ -22,11 +22,15 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
+#include <CGAL/AABB_primitive.h>
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <vector>
 
@@ -40,9 +44,36 @@ class Projector {
   using Point = K::Point_3;
   using Triangle = K::Triangle_3;
   using Segment = K::Segment_3;
-  using Triangle_iterator = std::vector<Triangle>::const_iterator;
   using Segment_iterator = std::vector<Segment>::const_iterator;
-  using Face_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangle_iterator>>>;
+
+  // The face tree's primitives are face indices; their triangles are made
+  // from the flat mesh when the tree needs them (a stored copy would cost 72
+  // bytes per face). The reference point is the first vertex, as for CGAL's
+  // AABB_triangle_primitive.
+  struct Face_triangle_map {
+    using key_type = Index;
+    using value_type = Triangle;
+    using reference = Triangle;
+    using category = boost::readable_property_map_tag;
+    const Flat_mesh* m;
+    Triangle operator[](Index f) const {
+      const auto& t = m->faces[f];
+      return Triangle(point(m->points[t[0]]), point(m->points[t[1]]), point(m->points[t[2]]));
+    }
+    friend Triangle get(const Face_triangle_map& map, Index f) { return map[f]; }
+  };
+  struct Face_point_map {
+    using key_type = Index;
+    using value_type = Point;
+    using reference = Point;
+    using category = boost::readable_property_map_tag;
+    const Flat_mesh* m;
+    Point operator[](Index f) const { return point(m->points[m->faces[f][0]]); }
+    friend Point get(const Face_point_map& map, Index f) { return map[f]; }
+  };
+  using Face_primitive =
+      CGAL::AABB_primitive<Index, Face_triangle_map, Face_point_map, CGAL::Tag_true, CGAL::Tag_false>;
+  using Face_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Face_primitive>>;
   using Crease_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segment_iterator>>>;
 
 public:
@@ -54,11 +85,13 @@ public:
 
   /// `original` and `classification` must outlive the projector: it keeps references.
   Projector(const Flat_mesh& original, const Vertex_classification& classification) : m_(original), c_(classification) {
-    triangles_.reserve(m_.number_of_faces());
-    for (const auto& f : m_.faces)
-      triangles_.emplace_back(point(m_.points[f[0]]), point(m_.points[f[1]]), point(m_.points[f[2]]));
     // Built here, not lazily at the first query, which may come from several threads.
-    if (!triangles_.empty()) face_tree_.rebuild(triangles_.cbegin(), triangles_.cend()), face_tree_.build();
+    if (m_.number_of_faces() > 0) {
+      face_tree_.rebuild(boost::counting_iterator<Index>(0),
+                         boost::counting_iterator<Index>(Index(m_.number_of_faces())), Face_triangle_map{&m_},
+                         Face_point_map{&m_});
+      face_tree_.build();
+    }
 
     // Patches: faces connected across non-sharp edges (union-find).
     patch_.resize(m_.number_of_faces());
@@ -103,22 +136,22 @@ private:
   // Faces sharing a vertex with face `home`, in its patch.
   template <class F> void for_each_face_near(std::size_t home, F f) const {
     for (std::size_t w : m_.faces[home])
-      for (const std::size_t* g = m_.vertex_faces.first(w); g != m_.vertex_faces.last(w); ++g)
+      for (const Index* g = m_.vertex_faces.first(w); g != m_.vertex_faces.last(w); ++g)
         if (patch_[*g] == patch_[home]) f(*g);
   }
 
   // Sharp edges of the same crease sharing an endpoint with edge `home`.
   template <class F> void for_each_crease_edge_near(std::size_t home, F f) const {
     for (std::size_t w : m_.edges[home])
-      for (const std::size_t* e = m_.vertex_edges.first(w); e != m_.vertex_edges.last(w); ++e)
+      for (const Index* e = m_.vertex_edges.first(w); e != m_.vertex_edges.last(w); ++e)
         if (c_.crease_of_edge[*e] == c_.crease_of_edge[home]) f(*e);
   }
 
   Result project_on_surface(const Vec3& q, const Vec3& current, std::size_t home) const {
     const Point query = point(q);
-    const auto hint = std::make_pair(point(current), triangles_.cbegin() + std::ptrdiff_t(home));
+    const auto hint = std::make_pair(point(current), Index(home));
     const auto found = face_tree_.closest_point_and_primitive(query, hint);
-    const std::size_t f = std::size_t(found.second - triangles_.cbegin());
+    const std::size_t f = found.second;
     bool near = false;
     for_each_face_near(home, [&](std::size_t g) { near = near || g == f; });
     if (near) return {vec(found.first), f, false};
@@ -127,7 +160,7 @@ private:
     double best_distance = (q - current).squaredNorm();
     K::Construct_projected_point_3 closest;
     for_each_face_near(home, [&](std::size_t g) {
-      const Vec3 p = vec(closest(triangles_[g], query));
+      const Vec3 p = vec(closest(Face_triangle_map{&m_}[Index(g)], query));
       const double distance = (q - p).squaredNorm();
       if (distance < best_distance) best = {p, g, true}, best_distance = distance;
     });
@@ -156,11 +189,10 @@ private:
 
   const Flat_mesh& m_;
   const Vertex_classification& c_;
-  std::vector<Triangle> triangles_;
   std::vector<Segment> segments_;
-  std::vector<std::size_t> segment_edge_;    // segment -> edge
-  std::vector<std::size_t> edge_to_segment_; // edge -> segment, npos if not sharp
-  std::vector<std::size_t> patch_;           // face -> representative face of its patch
+  std::vector<Index> segment_edge_;    // segment -> edge
+  std::vector<Index> edge_to_segment_; // edge -> segment, npos if not sharp
+  std::vector<Index> patch_;           // face -> representative face of its patch
   Face_tree face_tree_;
   Crease_tree crease_tree_;
 };

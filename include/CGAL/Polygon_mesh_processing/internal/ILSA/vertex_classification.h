@@ -30,7 +30,7 @@ namespace ILSA {
 inline Vec3 discrete_normal(const Flat_mesh& m, const std::vector<Vec3>& face_normals, std::size_t v) {
   Eigen::Matrix3d AtA = Eigen::Matrix3d::Zero();
   Vec3 At1 = Vec3::Zero();
-  for (const std::size_t* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) {
+  for (const Index* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) {
     const Vec3& n = face_normals[*f];
     AtA += n * n.transpose();
     At1 += n;
@@ -49,13 +49,13 @@ void compute_face_normals(const Flat_mesh& m, const std::vector<Vec3>& pos, std:
 /// What the classification stage hands to the smoothing stages.
 struct Vertex_classification {
   std::vector<ILSA_vertex_type> type;
-  std::vector<unsigned char> ridge_candidate; // |x| above the feature threshold
-  std::vector<unsigned char> sharp_edge;      // per edge (paper §3 or the user's edge map)
-  std::vector<std::size_t> crease_of_edge;    // crease polyline of a sharp edge, npos otherwise
-  std::vector<unsigned char> feature_edge;    // sharp, or (without the user's edge map) dihedral angle below θ_f
-  std::vector<std::array<std::size_t, 2>> attached_sharp; // a ridge vertex's two attached-sharp nodes
-  std::vector<std::array<std::size_t, 2>> attached_edges; // and the two sharp edges leading to them
-  std::size_t number_of_kinks = 0;                        // vertices with two sharp edges fixed as kinks
+  std::vector<unsigned char> ridge_candidate;       // |x| above the feature threshold
+  std::vector<unsigned char> sharp_edge;            // per edge (paper §3 or the user's edge map)
+  std::vector<Index> crease_of_edge;                // crease polyline of a sharp edge, npos otherwise
+  std::vector<unsigned char> feature_edge;          // sharp, or (without the user's edge map) dihedral angle below θ_f
+  std::vector<std::array<Index, 2>> attached_sharp; // a ridge vertex's two attached-sharp nodes
+  std::vector<std::array<Index, 2>> attached_edges; // and the two sharp edges leading to them
+  std::size_t number_of_kinks = 0;                  // vertices with two sharp edges fixed as kinks
 
   bool is_fixed(std::size_t v) const {
     return type[v] == ILSA_vertex_type::Corner || type[v] == ILSA_vertex_type::Boundary;
@@ -131,8 +131,8 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
   for (std::size_t v = 0; v < nv; ++v) {
     if (c.type[v] != ILSA_vertex_type::Smooth) continue;
     std::size_t count = 0;
-    const std::size_t* nb = m.vertex_neighbors.first(v);
-    for (const std::size_t* e = m.vertex_edges.first(v); e != m.vertex_edges.last(v); ++e, ++nb) {
+    const Index* nb = m.vertex_neighbors.first(v);
+    for (const Index* e = m.vertex_edges.first(v); e != m.vertex_edges.last(v); ++e, ++nb) {
       if (!c.sharp_edge[*e]) continue;
       if (count < 2) {
         c.attached_sharp[v][count] = *nb;
