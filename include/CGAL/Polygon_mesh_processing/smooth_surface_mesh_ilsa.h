@@ -329,7 +329,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
           input_minimum, triangle_aspect_ratio(original.points[t[0]], original.points[t[1]], original.points[t[2]]));
     quality_floor = (std::max)(quality_floor, input_minimum);
   }
-  const ilsa::Projector projector(original, classification);
+  const ilsa::Projector projector(original, classification, ConcurrencyTag());
   ilsa::Move_safety safety(original, classification, quality_monotone ? 1. : quality_floor, fidelity_tolerance,
                            reject_worsening, 3);
   auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {

@@ -15,11 +15,24 @@
 // sheets, the other side of a slot or of a crease) or another crease, and the
 // vertex is projected onto that neighbourhood instead, so it can only travel
 // across its own patch of the surface, never through space.
+//
+// Local answer (user manual, "Performance"): the guard makes the answer the
+// closest point of the faces near the home face in every case, so a smooth
+// vertex is first projected onto those faces alone. The AABB tree is asked
+// only when that could differ from its own answer: when two near faces (or the
+// current position) are within a rounding margin of the closest distance
+// (the tree breaks such ties by its traversal order), when a near face is too
+// thin for the local distance to be trusted to that margin, when a face of
+// another patch around the home face is as close, or when a face touching no
+// vertex of the home face might be (each vertex's clearance, its distance to
+// the nearest face not incident to it, computed once with the tree, rules that
+// out). The result is then the one of the tree query, bit for bit.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
 
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
 #include <CGAL/AABB_primitive.h>
@@ -32,6 +45,9 @@
 #include <boost/iterator/counting_iterator.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <cmath>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -84,7 +100,10 @@ public:
   };
 
   /// `original` and `classification` must outlive the projector: it keeps references.
-  Projector(const Flat_mesh& original, const Vertex_classification& classification) : m_(original), c_(classification) {
+  /// `ConcurrencyTag`: how the clearances are computed (the result is the same).
+  template <class ConcurrencyTag>
+  Projector(const Flat_mesh& original, const Vertex_classification& classification, ConcurrencyTag)
+      : m_(original), c_(classification) {
     // Built here, not lazily at the first query, which may come from several threads.
     if (m_.number_of_faces() > 0) {
       face_tree_.rebuild(boost::counting_iterator<Index>(0),
@@ -114,6 +133,7 @@ public:
       segments_.emplace_back(point(m_.points[m_.edges[e][0]]), point(m_.points[m_.edges[e][1]]));
     }
     if (!segments_.empty()) crease_tree_.rebuild(segments_.cbegin(), segments_.cend()), crease_tree_.build();
+    compute_clearances<ConcurrencyTag>();
   }
 
   /// Home of vertex `v` of the original mesh: an incident face, or for a ridge
@@ -148,6 +168,8 @@ private:
   }
 
   Result project_on_surface(const Vec3& q, const Vec3& current, std::size_t home) const {
+    Result local;
+    if (project_near(q, current, home, local)) return local;
     const Point query = point(q);
     const auto hint = std::make_pair(point(current), Index(home));
     const auto found = face_tree_.closest_point_and_primitive(query, hint);
@@ -187,8 +209,135 @@ private:
     return best;
   }
 
+  // The faces around the vertices of face `home`, each once: f(g, near), `near`
+  // when g is in the patch of `home` (see for_each_face_near()).
+  template <class F> void for_each_face_around(std::size_t home, F f) const {
+    const auto& h = m_.faces[home];
+    for (std::size_t k = 0; k < 3; ++k)
+      for (const Index* g = m_.vertex_faces.first(h[k]); g != m_.vertex_faces.last(h[k]); ++g) {
+        const auto& t = m_.faces[*g];
+        bool seen = false;
+        for (std::size_t j = 0; j < k; ++j) seen = seen || t[0] == h[j] || t[1] == h[j] || t[2] == h[j];
+        if (!seen) f(std::size_t(*g), patch_[*g] == patch_[home]);
+      }
+  }
+
+  // A lower bound of the squared distance from `x` to face `f`: the distance
+  // itself for a face that is not thin, else the distance to its edges less
+  // its height (the closest-point formula loses its accuracy on slivers).
+  double squared_distance_at_least(const Vec3& x, std::size_t f) const {
+    const auto& t = m_.faces[f];
+    const Vec3 &a = m_.points[t[0]], &b = m_.points[t[1]], &c = m_.points[t[2]];
+    if (!thin_[f]) return squared_distance_to_triangle(x, a, b, c);
+    const double edges = std::sqrt((std::min)(
+        {squared_distance_to_segment(x, a, b), squared_distance_to_segment(x, b, c), squared_distance_to_segment(x, c, a)}));
+    const double longest = std::sqrt((std::max)({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
+    const double height = longest > 0 ? area_vector(m_.points, t).norm() / longest : 0.;
+    const double bound = (std::max)(0., edges - height);
+    return bound * bound;
+  }
+
+  // Traversal of the face tree for the smallest squared distance from vertex
+  // `w` to the faces not incident to it, nearest boxes first.
+  struct Clearance_traits {
+    using Priority = double;
+    const Projector* self;
+    Index w;
+    double best; // squared
+    bool go_further() const { return true; }
+    void intersection(const Point&, const Face_primitive& primitive) {
+      const auto& t = self->m_.faces[primitive.id()];
+      if (t[0] != w && t[1] != w && t[2] != w)
+        best = (std::min)(best, self->squared_distance_at_least(self->m_.points[w], primitive.id()));
+    }
+    double box_distance(const CGAL::Bbox_3& b) const {
+      const Vec3& x = self->m_.points[w];
+      double d = 0;
+      for (int i = 0; i < 3; ++i) {
+        const double gap = (std::max)({b.min(i) - x[i], x[i] - b.max(i), 0.});
+        d += gap * gap;
+      }
+      return d;
+    }
+    template <class Node> bool do_intersect(const Point&, const Node& node) const {
+      return box_distance(node.bbox()) < best;
+    }
+    template <class Node> std::pair<bool, double> do_intersect_with_priority(const Point&, const Node& node) const {
+      const double d = box_distance(node.bbox());
+      return {d < best, -d};
+    }
+  };
+
+  // clearance_[w]: the distance from vertex w to the nearest face not incident
+  // to it, less the rounding margin; thin_[f]: whether face f is a sliver.
+  template <class ConcurrencyTag> void compute_clearances() {
+    const std::size_t n = m_.number_of_faces();
+    thin_.assign(n, 0);
+    for (std::size_t f = 0; f < n; ++f) {
+      const auto& t = m_.faces[f];
+      const double longest = (std::max)({(m_.points[t[1]] - m_.points[t[0]]).squaredNorm(),
+                                         (m_.points[t[2]] - m_.points[t[1]]).squaredNorm(),
+                                         (m_.points[t[0]] - m_.points[t[2]]).squaredNorm()});
+      thin_[f] = longest == 0 || !(area_vector(m_.points, m_.faces[f]).norm() >= thin_ratio * longest);
+    }
+    clearance_.assign(m_.number_of_vertices(), -1.);
+    if (n == 0) return;
+    parallel_for<ConcurrencyTag>(m_.number_of_vertices(), [&](std::size_t w) {
+      if (m_.vertex_faces.size(w) == 0) return;
+      Clearance_traits traits{this, Index(w), std::numeric_limits<double>::infinity()};
+      // A first bound from the faces around the neighbours, so that the traversal prunes from the start.
+      for (const Index* u = m_.vertex_neighbors.first(w); u != m_.vertex_neighbors.last(w); ++u)
+        for (const Index* g = m_.vertex_faces.first(*u); g != m_.vertex_faces.last(*u); ++g) {
+          const auto& t = m_.faces[*g];
+          if (t[0] != w && t[1] != w && t[2] != w)
+            traits.best = (std::min)(traits.best, squared_distance_at_least(m_.points[w], *g));
+        }
+      face_tree_.traversal_with_priority(point(m_.points[w]), traits);
+      clearance_[w] = std::sqrt(traits.best) - margin;
+    });
+  }
+
+  // The closest point of the faces near `home` to `q`, when it is certainly the
+  // answer of the tree query of project_on_surface() (see the top of this file).
+  bool project_near(const Vec3& q, const Vec3& current, std::size_t home, Result& out) const {
+    double best = std::numeric_limits<double>::infinity(), second = best, other = best;
+    std::size_t best_face = npos;
+    bool thin = false;
+    for_each_face_around(home, [&](std::size_t g, bool near) {
+      const auto& t = m_.faces[g];
+      thin = thin || thin_[g];
+      const double d = squared_distance_to_triangle(q, m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]);
+      if (!near)
+        other = (std::min)(other, d);
+      else if (d < best)
+        second = best, best = d, best_face = g;
+      else if (d < second)
+        second = d;
+    });
+    if (thin || best_face == npos) return false;
+    // No other near face, no face of another patch, not the current position
+    // within the margin; and no face that touches no vertex of `home`.
+    const double reach = std::sqrt(best) + margin;
+    if (!(std::sqrt(second) > reach && std::sqrt(other) > reach && (q - current).norm() > reach)) return false;
+    double clear = -1.;
+    for (Index w : m_.faces[home]) clear = (std::max)(clear, clearance_[w] - (q - m_.points[w]).norm());
+    if (!(clear > reach)) return false;
+    K::Construct_projected_point_3 closest;
+    out = {vec(closest(Face_triangle_map{&m_}[Index(best_face)], point(q))), best_face, false};
+    return true;
+  }
+
+  // Rounding margin of the local answer, in normalised units (the bounding-box
+  // diagonal is 1): far above the rounding of the distances (about 1e-16),
+  // far below any distance the smoothing depends on.
+  static constexpr double margin = 1e-10;
+  // A face is thin when twice its area is below this fraction of its longest edge squared.
+  static constexpr double thin_ratio = 1e-2;
+
   const Flat_mesh& m_;
   const Vertex_classification& c_;
+  std::vector<double> clearance_;     // per vertex, see compute_clearances()
+  std::vector<unsigned char> thin_;   // per face
   std::vector<Segment> segments_;
   std::vector<Index> segment_edge_;    // segment -> edge
   std::vector<Index> edge_to_segment_; // edge -> segment, npos if not sharp
