@@ -77,6 +77,9 @@ public:
     ring_changed_.assign(m_.number_of_vertices(), 0);
     vertex_now_.assign(m_.number_of_vertices(), 0.);
     vertex_witness_.assign(m_.number_of_vertices(), npos);
+    travel_.assign(m_.number_of_vertices(), 0.);
+    face_bound_.assign(m_.number_of_faces(), std::numeric_limits<double>::infinity());
+    face_travel_.assign(m_.number_of_faces(), {0., 0., 0.});
     face_witness_.resize(m_.number_of_faces());
     for (Index f = 0; f < m_.number_of_faces(); ++f) face_witness_[f] = {f, f, f, f};
     tries_.assign(m_.number_of_vertices(), 0);
@@ -101,7 +104,10 @@ public:
   Counts enforce(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home,
                  const std::vector<Vec3>& target, const std::vector<std::size_t>& moved, std::vector<Vec3>& next,
                  std::vector<Index>& next_home, const Project& project) {
-    for (std::size_t v : moved) tries_[v] = 0, is_moved_[v] = 1;
+    for (std::size_t v : moved) {
+      tries_[v] = 0, is_moved_[v] = 1;
+      travel_[v] += (next[v] - previous[v]).norm();
+    }
     // Each round but the last shortens a move, at most halvings_ + 1 times per
     // moved vertex. If the stamps could overflow in this call, they start again
     // from 0: stamps of earlier calls only need to be older than this call's.
@@ -113,13 +119,23 @@ public:
     const Round first_round = round_ + 1;
     const bool fidelity = std::isfinite(fidelity_tolerance_);
     std::vector<std::size_t> to_check(moved), offenders, faces, vertices, undecided;
+    // Whether a value computed in round `computed` of this call still holds,
+    // the positions it depends on having last changed in round `changed`.
+    auto current = [&](std::size_t computed, std::size_t changed) {
+      return computed == round_ || (computed >= first_round && changed < computed);
+    };
+    auto face_changed = [&](std::size_t f) {
+      const auto& t = m_.faces[f];
+      return std::size_t((std::max)({changed_round_[t[0]], changed_round_[t[1]], changed_round_[t[2]]}));
+    };
     while (!to_check.empty()) {
       ++round_;
-      // The faces around the vertices to check: which offend.
+      // The faces around the vertices to check: which offend (unless known
+      // from an earlier round of this call with the same positions).
       faces.clear();
       for (std::size_t v : to_check)
         for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
-          if (face_round_[*f] != round_) face_round_[*f] = round_, faces.push_back(*f);
+          if (!current(face_round_[*f], face_changed(*f))) face_round_[*f] = round_, faces.push_back(*f);
       const bool quality_tests = quality_floor_ > 0 || reject_worsening_;
       parallel_for<ConcurrencyTag>(faces.size(), [&](std::size_t i) {
         const std::size_t f = faces[i];
@@ -158,9 +174,6 @@ public:
         undecided.clear();
         vertices.clear();
         faces.clear();
-        auto current = [&](std::size_t computed, std::size_t changed) {
-          return computed == round_ || (computed >= first_round && changed < computed);
-        };
         for (std::size_t v : to_check) {
           if (bad_[v]) continue;
           undecided.push_back(v);
@@ -169,17 +182,22 @@ public:
           };
           share(v);
           for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
-          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-            const auto& t = m_.faces[*f];
-            const std::size_t changed = (std::max)({changed_round_[t[0]], changed_round_[t[1]], changed_round_[t[2]]});
-            if (!current(deviation_round_[*f], changed)) deviation_round_[*f] = round_, faces.push_back(*f);
-          }
+          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+            if (!current(deviation_round_[*f], face_changed(*f))) deviation_round_[*f] = round_, faces.push_back(*f);
         }
         parallel_for<ConcurrencyTag>(vertices.size(), [&](std::size_t i) {
           vertex_now_[vertices[i]] = vertex_deviation(next, vertices[i], vertex_witness_[vertices[i]]);
         });
         parallel_for<ConcurrencyTag>(faces.size(), [&](std::size_t i) {
-          face_now_[faces[i]] = face_deviation(next, faces[i], face_witness_[faces[i]]);
+          const std::size_t f = faces[i];
+          if (face_within_tolerance(f)) {
+            face_now_[f] = 0.; // only ever compared with the tolerance
+            return;
+          }
+          face_now_[f] = face_deviation(next, f, face_witness_[f]);
+          const auto& t = m_.faces[f];
+          face_bound_[f] = face_now_[f];
+          face_travel_[f] = {travel_[t[0]], travel_[t[1]], travel_[t[2]]};
         });
         parallel_for<ConcurrencyTag>(undecided.size(), [&](std::size_t i) {
           const std::size_t v = undecided[i];
@@ -192,6 +210,7 @@ public:
       parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
         const std::size_t v = offenders[i];
         ++tries_[v];
+        const Vec3 before = next[v];
         if (tries_[v] <= halvings_) {
           const double t = std::ldexp(1., -int(tries_[v]));
           const auto r = project(v, previous[v] + t * (target[v] - previous[v]), previous[v], previous_home[v]);
@@ -201,6 +220,7 @@ public:
           next[v] = previous[v];
           next_home[v] = previous_home[v];
         }
+        travel_[v] += (next[v] - before).norm();
       });
       // Only the stars of the vertices just changed need a new look.
       for (std::size_t v : offenders) {
@@ -353,6 +373,18 @@ private:
       if (c_.feature_edge[*e] && line_of(*e) == line) f(*e);
   }
 
+  // Whether face_deviation() of face `f` at `next` is certainly within the
+  // tolerance, without computing it: the distance to a fixed set of faces
+  // grows by at most the distance the point moves, the points measured are
+  // averages of the face's vertices, and each vertex has moved by at most
+  // its travel since face_bound_[f] was computed (margins for rounding).
+  bool face_within_tolerance(std::size_t f) const {
+    const auto& t = m_.faces[f];
+    double drift = 0;
+    for (std::size_t k = 0; k < 3; ++k) drift = (std::max)(drift, travel_[t[k]] - face_travel_[f][k]);
+    return face_bound_[f] + drift * (1. + 1e-9) + 1e-14 < fidelity_tolerance_;
+  }
+
   // Largest distance from the centroid and the edge midpoints of face `f` at
   // `pos` to the input surface around the face's vertices. `witnesses`: for
   // each of these points, the face looked at first (see squared_distance_near()).
@@ -459,6 +491,9 @@ private:
   std::vector<double> face_now_, vertex_now_;         // face_deviation / vertex_deviation at `next`
   std::vector<Index> vertex_witness_;                 // face first looked at by vertex_deviation
   std::vector<std::array<Index, 4>> face_witness_;    // the same, for each point of face_deviation
+  std::vector<double> travel_;                        // per vertex: length of the path of its position at `next`
+  std::vector<double> face_bound_;                    // per face: face_deviation when last computed
+  std::vector<std::array<double, 3>> face_travel_;    // travel_ of the face's vertices then
   std::vector<unsigned char> is_moved_;
   Round round_ = 0;
 };
