@@ -6,7 +6,8 @@
 // named parameters chain in both orders; the range overload fixes the rest;
 // the default quality floor keeps the input's minimum aspect ratio; no move
 // that lowers its star's mean quality is kept; the convergence stop; the
-// progress callback; the fidelity summary without the Hausdorff distance.
+// progress callback; the fidelity summary without the Hausdorff distance; the
+// projection's local answer is the AABB tree's.
 #include "ilsa_test_utils.h"
 
 #include <CGAL/AABB_segment_primitive.h>
@@ -199,10 +200,13 @@ template <class Mesh> void test_constrained_vertices() {
 // Projection cannot jump between sheets: a thin shell made of two concentric
 // copies of a sphere, 0.2 % of the radius apart, far less than the inward
 // pull of a Laplacian step on it. Every vertex must stay on its own sheet.
-template <class Mesh> void test_thin_shell() {
+// The low sphere and a copy shrunk by 0.998 facing inward: two sheets 0.1 %
+// of the size apart. `n`: the number of vertices of each sheet.
+template <class Mesh> Mesh thin_shell(std::size_t& n) {
   const Surface_mesh sphere = read_mesh<Surface_mesh>(data_file("sphere_low.off"));
   Soup soup = soup_of(sphere);
-  const std::size_t n = soup.points.size(), nf = soup.triangles.size();
+  n = soup.points.size();
+  const std::size_t nf = soup.triangles.size();
   const auto box = CGAL::bounding_box(soup.points.begin(), soup.points.end());
   const Point center = CGAL::midpoint(box.min(), box.max());
   for (std::size_t i = 0; i < n; ++i) soup.points.push_back(center + 0.998 * (soup.points[i] - center));
@@ -210,7 +214,12 @@ template <class Mesh> void test_thin_shell() {
     const auto t = soup.triangles[f];
     soup.triangles.push_back({t[0] + n, t[2] + n, t[1] + n}); // inner sheet faces inward
   }
-  Mesh original = to_mesh<Mesh>(soup);
+  return to_mesh<Mesh>(soup);
+}
+
+template <class Mesh> void test_thin_shell() {
+  std::size_t n = 0;
+  Mesh original = thin_shell<Mesh>(n);
   perturb_on_surface(original, 0.5, 13);
   Mesh m = original;
   const auto stats = PMP::smooth_surface_mesh_ilsa(m);
@@ -237,6 +246,69 @@ template <class Mesh> void test_thin_shell() {
             << stats.number_of_guarded_projections << std::endl;
   assert(worst <= tolerance);
   assert(stats.number_of_guarded_projections > 0); // the guard had work to do
+}
+
+// The projection's local answer (projection.h) is the AABB tree's, bit for
+// bit, guard flag included: targets around every vertex at distances from
+// 1 % to 1.5 edge lengths, above the vertex along its normal (a closest point
+// shared by its faces: a tie the local answer must leave to the tree) and at
+// the vertex itself, on meshes with creases, slivers, mirror symmetry and two
+// sheets closer than an edge. A good share of the targets must get the local
+// answer (in a real run, most do), or the comparison would prove little.
+template <class Mesh> void test_local_projection() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  std::size_t n = 0;
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  for (const char* name : {"fandisk.off", "mech-holes-shark.off", "hemisphere.off"})
+    meshes.emplace_back(name, read_mesh<Mesh>(data_file(name)));
+  meshes.emplace_back("thin shell", thin_shell<Mesh>(n));
+  std::mt19937 rng(5);
+  std::normal_distribution<double> normal;
+  for (const auto& [name, tm] : meshes) {
+    std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list;
+    ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, CGAL::parameters::default_values()))> vertex_index{
+        ilsa::vertex_index_map_of(tm, CGAL::parameters::default_values()), {}};
+    std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> edge_list;
+    const ilsa::Flat_mesh m =
+        ilsa::build_flat_mesh(tm, get(CGAL::vertex_point, tm), vertex_list, vertex_index,
+                              ilsa::face_index_map_of(tm, CGAL::parameters::default_values()), edge_list);
+    std::vector<unsigned char> constrained_vertices, constrained_edges;
+    const auto options = ilsa::read_classification_parameters(
+        tm, m, CGAL::parameters::default_values(), vertex_list, edge_list, constrained_vertices, constrained_edges);
+    const ilsa::Vertex_classification c = ilsa::classify(m, options);
+    const ilsa::Projector projector(m, c, CGAL::Sequential_tag());
+    std::size_t local = 0, total = 0, guarded = 0;
+    for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
+      if (m.vertex_faces.size(v) == 0) continue;
+      const std::size_t home = *m.vertex_faces.first(v);
+      const ilsa::Vec3 x = m.points[v];
+      double edge = 0;
+      for (const auto* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w)
+        edge = (std::max)(edge, (m.points[*w] - x).norm());
+      ilsa::Vec3 vertex_normal = ilsa::Vec3::Zero();
+      for (const auto* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f)
+        vertex_normal += ilsa::unit_normal(m.points, m.faces[*f]);
+      std::vector<ilsa::Vec3> targets{x, x + 0.05 * edge * vertex_normal.normalized()};
+      for (double scale : {0.01, 0.1, 0.5, 1.5}) {
+        const ilsa::Vec3 direction(normal(rng), normal(rng), normal(rng));
+        targets.push_back(x + scale * edge * direction.normalized());
+      }
+      for (const ilsa::Vec3& q : targets) {
+        const auto by_tree = projector.project_on_surface_by_tree(q, x, home);
+        ilsa::Projector::Result near;
+        ++total;
+        guarded += by_tree.guarded;
+        if (!projector.project_near(q, x, home, near)) continue;
+        ++local;
+        assert(near.point == by_tree.point);
+        assert(near.home == by_tree.home);
+        assert(near.guarded == by_tree.guarded);
+      }
+    }
+    std::cout << "local projection, " << name << ": " << local << " of " << total << " answered locally, same as the tree ("
+              << guarded << " guarded by the tree)" << std::endl;
+    assert(local > (name == std::string("thin shell") ? 0 : total / 5));
+  }
 }
 
 // Fidelity tolerance: no input vertex ends farther from the smoothed surface
@@ -415,6 +487,8 @@ template <class Mesh> void test_fidelity_without_hausdorff() {
 }
 
 int main() {
+  test_local_projection<Surface_mesh>();
+  test_local_projection<Polyhedron>();
   test_callback<Surface_mesh>();
   test_callback<Polyhedron>();
   test_fidelity_without_hausdorff<Surface_mesh>();

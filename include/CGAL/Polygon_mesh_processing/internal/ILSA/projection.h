@@ -170,6 +170,12 @@ private:
   Result project_on_surface(const Vec3& q, const Vec3& current, std::size_t home) const {
     Result local;
     if (project_near(q, current, home, local)) return local;
+    return project_on_surface_by_tree(q, current, home);
+  }
+
+public:
+  /// What project() gives a smooth vertex without the local answer (tests compare the two).
+  Result project_on_surface_by_tree(const Vec3& q, const Vec3& current, std::size_t home) const {
     const Point query = point(q);
     const auto hint = std::make_pair(point(current), Index(home));
     const auto found = face_tree_.closest_point_and_primitive(query, hint);
@@ -189,6 +195,7 @@ private:
     return best;
   }
 
+private:
   Result project_on_crease(const Vec3& q, const Vec3& current, std::size_t home) const {
     const Point query = point(q);
     const auto hint = std::make_pair(point(current), segments_.cbegin() + std::ptrdiff_t(edge_to_segment_[home]));
@@ -297,8 +304,10 @@ private:
     });
   }
 
-  // The closest point of the faces near `home` to `q`, when it is certainly the
-  // answer of the tree query of project_on_surface() (see the top of this file).
+public:
+  /// The closest point of the faces near `home` to `q`, when it is certainly
+  /// the answer of project_on_surface_by_tree() (see the top of this file):
+  /// then `out` is set and the result is true.
   bool project_near(const Vec3& q, const Vec3& current, std::size_t home, Result& out) const {
     double best = std::numeric_limits<double>::infinity(), second = best, other = best;
     std::size_t best_face = npos;
@@ -327,6 +336,7 @@ private:
     return true;
   }
 
+private:
   // Rounding margin of the local answer, in normalised units (the bounding-box
   // diagonal is 1): far above the rounding of the distances (about 1e-16),
   // far below any distance the smoothing depends on.
