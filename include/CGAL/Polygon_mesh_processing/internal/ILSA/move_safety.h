@@ -78,8 +78,8 @@ public:
     vertex_now_.assign(m_.number_of_vertices(), 0.);
     vertex_witness_.assign(m_.number_of_vertices(), npos);
     travel_.assign(m_.number_of_vertices(), 0.);
-    face_bound_.assign(m_.number_of_faces(), std::numeric_limits<double>::infinity());
-    face_travel_.assign(m_.number_of_faces(), {0., 0., 0.});
+    face_bound_.assign(m_.number_of_faces(), std::numeric_limits<float>::infinity());
+    face_travel_.assign(m_.number_of_faces(), {0.f, 0.f, 0.f});
     face_witness_.resize(m_.number_of_faces());
     for (Index f = 0; f < m_.number_of_faces(); ++f) face_witness_[f] = {f, f, f, f};
     tries_.assign(m_.number_of_vertices(), 0);
@@ -196,8 +196,8 @@ public:
           }
           face_now_[f] = face_deviation(next, f, face_witness_[f]);
           const auto& t = m_.faces[f];
-          face_bound_[f] = face_now_[f];
-          face_travel_[f] = {travel_[t[0]], travel_[t[1]], travel_[t[2]]};
+          face_bound_[f] = rounded_up(face_now_[f]);
+          face_travel_[f] = {rounded_down(travel_[t[0]]), rounded_down(travel_[t[1]]), rounded_down(travel_[t[2]])};
         });
         parallel_for<ConcurrencyTag>(undecided.size(), [&](std::size_t i) {
           const std::size_t v = undecided[i];
@@ -378,11 +378,21 @@ private:
   // grows by at most the distance the point moves, the points measured are
   // averages of the face's vertices, and each vertex has moved by at most
   // its travel since face_bound_[f] was computed (margins for rounding).
+  // The bound and the travels are stored as floats, rounded so that the
+  // bound stays a bound.
   bool face_within_tolerance(std::size_t f) const {
     const auto& t = m_.faces[f];
     double drift = 0;
-    for (std::size_t k = 0; k < 3; ++k) drift = (std::max)(drift, travel_[t[k]] - face_travel_[f][k]);
-    return face_bound_[f] + drift * (1. + 1e-9) + 1e-14 < fidelity_tolerance_;
+    for (std::size_t k = 0; k < 3; ++k) drift = (std::max)(drift, travel_[t[k]] - double(face_travel_[f][k]));
+    return double(face_bound_[f]) + drift * (1. + 1e-9) + 1e-14 < fidelity_tolerance_;
+  }
+  static float rounded_up(double x) {
+    const float f = float(x);
+    return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  }
+  static float rounded_down(double x) {
+    const float f = float(x);
+    return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
   }
 
   // Largest distance from the centroid and the edge midpoints of face `f` at
@@ -492,8 +502,8 @@ private:
   std::vector<Index> vertex_witness_;                 // face first looked at by vertex_deviation
   std::vector<std::array<Index, 4>> face_witness_;    // the same, for each point of face_deviation
   std::vector<double> travel_;                        // per vertex: length of the path of its position at `next`
-  std::vector<double> face_bound_;                    // per face: face_deviation when last computed
-  std::vector<std::array<double, 3>> face_travel_;    // travel_ of the face's vertices then
+  std::vector<float> face_bound_;                     // per face: face_deviation when last computed
+  std::vector<std::array<float, 3>> face_travel_;     // travel_ of the face's vertices then
   std::vector<unsigned char> is_moved_;
   Round round_ = 0;
 };
