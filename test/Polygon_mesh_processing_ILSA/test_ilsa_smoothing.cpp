@@ -273,8 +273,8 @@ template <class Mesh> void test_local_projection() {
         ilsa::build_flat_mesh(tm, get(CGAL::vertex_point, tm), vertex_list, vertex_index,
                               ilsa::face_index_map_of(tm, CGAL::parameters::default_values()), edge_list);
     std::vector<unsigned char> constrained_vertices, constrained_edges;
-    const auto options = ilsa::read_classification_parameters(
-        tm, m, CGAL::parameters::default_values(), vertex_list, edge_list, constrained_vertices, constrained_edges);
+    const auto options = ilsa::read_classification_parameters(tm, m, CGAL::parameters::default_values(), vertex_list,
+                                                              edge_list, constrained_vertices, constrained_edges);
     const ilsa::Vertex_classification c = ilsa::classify(m, options);
     const ilsa::Projector projector(m, c, CGAL::Sequential_tag());
     std::size_t local = 0, total = 0, guarded = 0;
@@ -305,8 +305,8 @@ template <class Mesh> void test_local_projection() {
         assert(near.guarded == by_tree.guarded);
       }
     }
-    std::cout << "local projection, " << name << ": " << local << " of " << total << " answered locally, same as the tree ("
-              << guarded << " guarded by the tree)" << std::endl;
+    std::cout << "local projection, " << name << ": " << local << " of " << total
+              << " answered locally, same as the tree (" << guarded << " guarded by the tree)" << std::endl;
     assert(local > (name == std::string("thin shell") ? 0 : total / 5));
   }
 }

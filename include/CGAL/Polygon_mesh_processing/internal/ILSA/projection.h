@@ -229,6 +229,11 @@ private:
       }
   }
 
+  bool incident(std::size_t f, std::size_t w) const {
+    const auto& t = m_.faces[f];
+    return t[0] == w || t[1] == w || t[2] == w;
+  }
+
   // A lower bound of the squared distance from `x` to face `f`: the distance
   // itself for a face that is not thin, else the distance to its edges less
   // its height (the closest-point formula loses its accuracy on slivers).
@@ -236,8 +241,9 @@ private:
     const auto& t = m_.faces[f];
     const Vec3 &a = m_.points[t[0]], &b = m_.points[t[1]], &c = m_.points[t[2]];
     if (!thin_[f]) return squared_distance_to_triangle(x, a, b, c);
-    const double edges = std::sqrt((std::min)(
-        {squared_distance_to_segment(x, a, b), squared_distance_to_segment(x, b, c), squared_distance_to_segment(x, c, a)}));
+    const double edges =
+        std::sqrt((std::min)({squared_distance_to_segment(x, a, b), squared_distance_to_segment(x, b, c),
+                              squared_distance_to_segment(x, c, a)}));
     const double longest = std::sqrt((std::max)({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
     const double height = longest > 0 ? area_vector(m_.points, t).norm() / longest : 0.;
     const double bound = (std::max)(0., edges - height);
@@ -253,8 +259,7 @@ private:
     double best; // squared
     bool go_further() const { return true; }
     void intersection(const Point&, const Face_primitive& primitive) {
-      const auto& t = self->m_.faces[primitive.id()];
-      if (t[0] != w && t[1] != w && t[2] != w)
+      if (!self->incident(primitive.id(), w))
         best = (std::min)(best, self->squared_distance_at_least(self->m_.points[w], primitive.id()));
     }
     double box_distance(const CGAL::Bbox_3& b) const {
@@ -294,11 +299,8 @@ private:
       Clearance_traits traits{this, Index(w), std::numeric_limits<double>::infinity()};
       // A first bound from the faces around the neighbours, so that the traversal prunes from the start.
       for (const Index* u = m_.vertex_neighbors.first(w); u != m_.vertex_neighbors.last(w); ++u)
-        for (const Index* g = m_.vertex_faces.first(*u); g != m_.vertex_faces.last(*u); ++g) {
-          const auto& t = m_.faces[*g];
-          if (t[0] != w && t[1] != w && t[2] != w)
-            traits.best = (std::min)(traits.best, squared_distance_at_least(m_.points[w], *g));
-        }
+        for (const Index* g = m_.vertex_faces.first(*u); g != m_.vertex_faces.last(*u); ++g)
+          if (!incident(*g, w)) traits.best = (std::min)(traits.best, squared_distance_at_least(m_.points[w], *g));
       face_tree_.traversal_with_priority(point(m_.points[w]), traits);
       clearance_[w] = std::sqrt(traits.best) - margin;
     });
@@ -346,8 +348,8 @@ private:
 
   const Flat_mesh& m_;
   const Vertex_classification& c_;
-  std::vector<double> clearance_;     // per vertex, see compute_clearances()
-  std::vector<unsigned char> thin_;   // per face
+  std::vector<double> clearance_;   // per vertex, see compute_clearances()
+  std::vector<unsigned char> thin_; // per face
   std::vector<Segment> segments_;
   std::vector<Index> segment_edge_;    // segment -> edge
   std::vector<Index> edge_to_segment_; // edge -> segment, npos if not sharp
