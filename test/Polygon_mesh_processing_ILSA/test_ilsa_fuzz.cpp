@@ -12,7 +12,16 @@
 //   and the same edges of the result within it of each other, both ways (the
 //   distance of input vertices to the result is bounded per move, not
 //   globally: user manual, "Known Limitations");
-// - with projection: every vertex on the input surface.
+// - with projection: every vertex on the input surface;
+// - the promises that hold per move, where the test can see what each move
+//   was judged against: after one iteration, no moved vertex lowered the mean
+//   aspect ratio of its star (worsening moves rejected); in a run on vertices
+//   four edges apart (drawn in a fifth of the cases with the safety check),
+//   every input vertex within the fidelity tolerance of the result and the
+//   face points the package measures within it of the input, and no star with
+//   a lower mean aspect ratio; a run stopped by `ilsa_minimum_quality_gain`
+//   gained less than it in its last iteration and at least it in the one
+//   before (runs with one and two iterations fewer).
 // A quarter of the cases leave the flip check as the only guard (quality floor
 // 0, worsening moves accepted, no fidelity bound).
 // Also always: the connectivity is unchanged; in a fifth of the cases a
@@ -66,6 +75,48 @@ std::vector<std::string> mesh_files() {
   return files;
 }
 
+using vd = Surface_mesh::Vertex_index;
+
+// Mean aspect ratio of the faces around `v`, with `v` at `at` and the other
+// vertices where they are in `m`; `shortest` is lowered to the shortest edge seen.
+double star_mean(const Surface_mesh& m, vd v, const Point& at, double& shortest) {
+  double sum = 0;
+  std::size_t n = 0;
+  for (auto f : CGAL::faces_around_target(m.halfedge(v), m)) {
+    if (f == Surface_mesh::null_face()) continue;
+    std::array<Point, 3> p;
+    std::size_t k = 0;
+    for (auto u : CGAL::vertices_around_face(m.halfedge(f), m)) p[k++] = u == v ? at : m.point(u);
+    sum += PMP::triangle_aspect_ratio(p[0], p[1], p[2]);
+    for (std::size_t i = 0; i < 3; ++i)
+      shortest = (std::min)(shortest, std::sqrt(CGAL::squared_distance(p[i], p[(i + 1) % 3])));
+    ++n;
+  }
+  return n ? sum / double(n) : 0.;
+}
+
+// Vertices of `m` in random order, each kept unless it is within three edges
+// of one kept before: the kept vertices are at least four edges apart.
+std::vector<vd> isolated_vertices(const Surface_mesh& m, std::mt19937& rng) {
+  std::vector<vd> order(vertices(m).begin(), vertices(m).end()), kept;
+  std::shuffle(order.begin(), order.end(), rng);
+  std::vector<unsigned char> blocked(num_vertices(m), 0);
+  for (vd v : order) {
+    if (blocked[std::size_t(v)]) continue;
+    kept.push_back(v);
+    std::vector<vd> ring{v}, next;
+    blocked[std::size_t(v)] = 1;
+    for (int distance = 1; distance <= 3; ++distance, ring.swap(next)) {
+      next.clear();
+      for (vd u : ring)
+        if (m.halfedge(u) != Surface_mesh::null_halfedge())
+          for (vd w : CGAL::vertices_around_target(m.halfedge(u), m))
+            if (!blocked[std::size_t(w)]) blocked[std::size_t(w)] = 1, next.push_back(w);
+    }
+  }
+  return kept;
+}
+
 } // namespace
 
 int main() {
@@ -89,6 +140,8 @@ int main() {
   const double unbounded = std::numeric_limits<double>::infinity();
   int failures = 0, flip_only = 0, transformed = 0, transformed_elsewhere = 0;
   double worst_transformed_difference = 0; // of the copies not scaled by a power of two
+  int one_iteration_checked = 0, isolated_runs = 0, convergence_checked = 0;
+  std::size_t isolated_moves = 0;
   for (int c = first; c < first + cases; ++c) {
     std::mt19937 rng(2026u + unsigned(c));
     const std::size_t which = std::size_t(c) % meshes.size();
@@ -127,7 +180,6 @@ int main() {
       wa = 0., relax1 = relax2 = 1., mu = 100., iterations = (std::max)(iterations, 8u);
     }
 
-    using vd = Surface_mesh::Vertex_index;
     using ed = Surface_mesh::Edge_index;
     std::vector<vd> range;
     std::map<vd, bool> constrained_vertices;
@@ -175,14 +227,17 @@ int main() {
                   .callback(stop_at);
     // Sequential, and in parallel (with TBB), which must give the same points.
     Surface_mesh m = original, parallel = original;
-    auto run = [&](Surface_mesh& x, auto tag, const auto& parameters) {
+    auto run_on = [&](const std::vector<vd>& vertex_range, Surface_mesh& x, auto tag, const auto& parameters) {
       using Tag = decltype(tag);
-      // `range` and the maps hold descriptors of `original`: a Surface_mesh copy has the same ones.
+      // The ranges and the maps hold descriptors of `original`: a Surface_mesh copy has the same ones.
       if (use_edge_map)
         return PMP::smooth_surface_mesh_ilsa<Tag>(
-            range, x, parameters.edge_is_constrained_map(boost::make_assoc_property_map(constrained_edges)));
-      return PMP::smooth_surface_mesh_ilsa<Tag>(range, x, parameters);
+            vertex_range, x, parameters.edge_is_constrained_map(boost::make_assoc_property_map(constrained_edges)));
+      return PMP::smooth_surface_mesh_ilsa<Tag>(vertex_range, x, parameters);
     };
+    auto run = [&](Surface_mesh& x, auto tag, const auto& parameters) { return run_on(range, x, tag, parameters); };
+    // `np` with the floor drawn (or the library's default).
+    auto with_floor = [&](const auto& f) { return default_floor ? f(np) : f(np.ilsa_quality_floor(floor)); };
     PMP::ILSA_statistics statistics;
     auto run_both = [&](const auto& parameters) {
       const std::function<bool(double)> counted = [&](double a) { return ++callback_calls, stop_at(a); };
@@ -316,6 +371,115 @@ int main() {
       if (std::isfinite(tolerance)) ok = ok && f.max_crease_deviation <= tolerance + rounding;
     }
     if (project) ok = ok && f.max_vertex_distance <= 1e-9;
+
+    // The promises that hold per move, where a move is judged against its
+    // neighbours' positions of the same iteration, which the test does not see.
+    // Aspect ratios computed here differ from the package's by the rounding of
+    // its normalised coordinates (at most 2^-52 (1 + |centre| / diagonal) of the
+    // diagonal per coordinate, written back included); an aspect ratio moves by
+    // at most about ten times a vertex's shift over the shortest edge, so
+    // 1000 times that bounds the difference with margin.
+    const double diagonal = bbox_diagonal(original);
+    const auto input_points = points_of(original);
+    const auto box = CGAL::bounding_box(input_points.begin(), input_points.end());
+    const double centre = (std::max)({std::abs(box.min().x() + box.max().x()), std::abs(box.min().y() + box.max().y()),
+                                      std::abs(box.min().z() + box.max().z())}) /
+                          2;
+    const double coordinate_rounding = std::ldexp(1., -52) * (1 + centre / diagonal); // of the diagonal
+    auto quality_rounding = [&](double shortest) { return 1e3 * coordinate_rounding * diagonal / shortest; };
+    // A run of one iteration: every vertex moved kept the mean aspect ratio of its
+    // star from falling, its neighbours being where they end.
+    bool worsening_ok = true;
+    if (safety && reject_worsening && statistics.number_of_iterations == 1) {
+      ++one_iteration_checked;
+      for (auto v : vertices(m)) {
+        if (m.point(v) == original.point(v)) continue;
+        double shortest = std::numeric_limits<double>::infinity();
+        const double now = star_mean(m, v, m.point(v), shortest), was = star_mean(m, v, original.point(v), shortest);
+        worsening_ok = worsening_ok && now >= was - quality_rounding(shortest);
+      }
+    }
+    // A run on vertices at least four edges apart (a range of its own, drawn
+    // in a fifth of the cases with the safety check), so that no neighbour of a
+    // moved vertex moves: then a move's tests see the final positions, and the
+    // per-move promises become global ones. Every input vertex ends within the
+    // fidelity tolerance of the result, the centroid and edge midpoints of every
+    // face within it of the input (the package measures to faces near them, at
+    // least as far as the whole surface), and, with worsening moves rejected,
+    // no star ends with a lower mean aspect ratio (a move per iteration, each
+    // not lowering it).
+    std::mt19937 isolated_rng(104729u + unsigned(c));
+    bool isolated_ok = true;
+    if (safety && unit(isolated_rng) < 0.2) {
+      ++isolated_runs;
+      const std::vector<vd> isolated = isolated_vertices(original, isolated_rng);
+      Surface_mesh x = original;
+      const auto stats = with_floor([&](const auto& p) { return run_on(isolated, x, CGAL::Sequential_tag(), p); });
+      using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Surface_mesh>>>;
+      const Tree input_tree(faces(original).first, faces(original).second, original);
+      const Tree result_tree(faces(x).first, faces(x).second, x);
+      double vertex_worst = 0, face_worst = 0;
+      for (vd v : isolated) {
+        if (x.point(v) == original.point(v)) continue;
+        ++isolated_moves;
+        if (reject_worsening) {
+          double shortest = std::numeric_limits<double>::infinity();
+          const double now = star_mean(x, v, x.point(v), shortest), was = star_mean(x, v, original.point(v), shortest);
+          isolated_ok = isolated_ok && now >= was - double(stats.number_of_iterations) * quality_rounding(shortest);
+        }
+        if (!std::isfinite(tolerance)) continue;
+        vertex_worst = (std::max)(vertex_worst, std::sqrt(result_tree.squared_distance(original.point(v))));
+        for (vd w : CGAL::vertices_around_target(x.halfedge(v), x))
+          vertex_worst = (std::max)(vertex_worst, std::sqrt(result_tree.squared_distance(original.point(w))));
+        for (auto fa : CGAL::faces_around_target(x.halfedge(v), x)) {
+          if (fa == Surface_mesh::null_face()) continue;
+          std::vector<Point> p;
+          for (auto u : CGAL::vertices_around_face(x.halfedge(fa), x)) p.push_back(x.point(u));
+          for (const Point& q : {CGAL::centroid(p[0], p[1], p[2]), CGAL::midpoint(p[0], p[1]),
+                                 CGAL::midpoint(p[1], p[2]), CGAL::midpoint(p[2], p[0])})
+            face_worst = (std::max)(face_worst, std::sqrt(input_tree.squared_distance(q)));
+        }
+      }
+      isolated_ok = isolated_ok && vertex_worst / diagonal <= tolerance + rounding &&
+                    face_worst / diagonal <= tolerance + rounding;
+      if (!isolated_ok)
+        std::cout << "case " << c << ", vertices four edges apart: " << isolated.size() << " in the range, "
+                  << stats.number_of_iterations << " iterations, input vertex to the result " << vertex_worst / diagonal
+                  << ", face points to the input " << face_worst / diagonal << " (tolerance " << tolerance << ")"
+                  << std::endl;
+    }
+    // The convergence stop: a run that ended before its cap and its callback's
+    // stop gained less than the minimum in its last iteration, and at least the
+    // minimum in the one before (mean aspect ratios of the same smoothing run
+    // for one and two iterations fewer, the gain ignored; the rounding of each
+    // face's aspect ratio bounds that of the mean).
+    bool convergence_ok = true;
+    if (gain > 0 && statistics.number_of_iterations < allowed) {
+      ++convergence_checked;
+      const std::size_t k = statistics.number_of_iterations;
+      double shortest = std::numeric_limits<double>::infinity();
+      for (auto e : edges(m))
+        shortest =
+            (std::min)(shortest, std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m)))));
+      auto mean_after = [&](std::size_t j) {
+        Surface_mesh x = original;
+        const auto stats = with_floor([&](const auto& p) {
+          return run(x, CGAL::Sequential_tag(),
+                     p.number_of_iterations(unsigned(j))
+                         .ilsa_minimum_quality_gain(0.)
+                         .callback(std::function<bool(double)>()));
+        });
+        convergence_ok = convergence_ok && stats.number_of_iterations == j;
+        for (auto e : edges(x))
+          shortest =
+              (std::min)(shortest, std::sqrt(CGAL::squared_distance(x.point(source(e, x)), x.point(target(e, x)))));
+        return PMP::mesh_quality_ilsa(x).mean_aspect_ratio;
+      };
+      const double last = mean_after(k - 1);
+      convergence_ok = convergence_ok && after.mean_aspect_ratio - last < gain + 2 * quality_rounding(shortest);
+      if (k >= 2) convergence_ok = convergence_ok && last - mean_after(k - 2) >= gain - 2 * quality_rounding(shortest);
+    }
+    ok = ok && worsening_ok && isolated_ok && convergence_ok;
     if (!ok) {
       ++failures;
       std::cout << "case " << c << " (" << files[which] << ", iterations " << iterations << ", steps " << steps
@@ -331,14 +495,18 @@ int main() {
                 << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
                 << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
                 << statistics.number_of_iterations << " iterations run, " << allowed << " allowed"
-                << ", transformed copy: promises kept " << transformed_ok << ", off by " << transformed_difference
-                << " (input rounding " << rounding_of_copy << ")" << std::endl;
+                << ", one-iteration worsening test " << worsening_ok << ", vertices four edges apart " << isolated_ok
+                << ", convergence stop " << convergence_ok << ", transformed copy: promises kept " << transformed_ok
+                << ", off by " << transformed_difference << " (input rounding " << rounding_of_copy << ")" << std::endl;
     }
   }
   std::cout << "test_ilsa_fuzz: " << cases << " cases (" << flip_only << " with the flip check as the only guard, "
             << transformed << " also transformed, " << transformed_elsewhere
             << " of them with vertices beyond rounding of the untransformed result, by at most "
-            << worst_transformed_difference << " of the diagonal), " << failures << " failures" << std::endl;
+            << worst_transformed_difference << " of the diagonal; " << one_iteration_checked
+            << " one-iteration runs with the worsening test checked, " << isolated_runs
+            << " runs on vertices four edges apart with " << isolated_moves << " moves, " << convergence_checked
+            << " convergence stops checked), " << failures << " failures" << std::endl;
   ILSA_CHECK(failures == 0);
   return 0;
 }
