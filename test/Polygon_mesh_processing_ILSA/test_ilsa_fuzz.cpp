@@ -12,7 +12,8 @@
 //   and the same edges of the result within it of each other, both ways (the
 //   distance of input vertices to the result is bounded per move, not
 //   globally: user manual, "Known Limitations");
-// - with projection: every vertex on the input surface;
+// - with projection: every vertex on the input surface, every ridge vertex on
+//   an input crease edge;
 // - the promises that hold per move, where the test can see what each move
 //   was judged against: after one iteration, no moved vertex lowered the mean
 //   aspect ratio of its star (worsening moves rejected); in a run on vertices
@@ -46,6 +47,7 @@
 // run; ILSA_FUZZ_MAX_FACES leaves out meshes with more faces.
 #include "ilsa_test_utils.h"
 
+#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 
 #include <cstdlib>
@@ -371,6 +373,33 @@ int main() {
       if (std::isfinite(tolerance)) ok = ok && f.max_crease_deviation <= tolerance + rounding;
     }
     if (project) ok = ok && f.max_vertex_distance <= 1e-9;
+    // With projection, every ridge vertex on a crease edge of the input: an edge
+    // of the edge map, or else one whose face normals are more than the feature
+    // angle apart (less 1e-6 degrees, for the rounding of the package's angles).
+    double ridge_off_crease = 0;
+    if (project) {
+      std::vector<K::Segment_3> creases;
+      for (auto e : edges(original)) {
+        const auto h = halfedge(e, original);
+        bool crease = false;
+        if (use_edge_map)
+          crease = constrained_edges[e];
+        else if (!is_border_edge(h, original)) {
+          const auto n0 = PMP::compute_face_normal(face(h, original), original);
+          const auto n1 = PMP::compute_face_normal(face(opposite(h, original), original), original);
+          crease = std::acos((std::max)(-1., (std::min)(1., n0 * n1))) * 180. / CGAL_PI > angle - 1e-6;
+        }
+        if (crease) creases.emplace_back(original.point(source(h, original)), original.point(target(h, original)));
+      }
+      using Segment_tree = CGAL::AABB_tree<
+          CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, std::vector<K::Segment_3>::const_iterator>>>;
+      const Segment_tree crease_tree(creases.cbegin(), creases.cend());
+      for (auto v : vertices(m))
+        if (types[v] == PMP::ILSA_vertex_type::Ridge && !(m.point(v) == original.point(v)))
+          ridge_off_crease =
+              creases.empty() ? 1. : (std::max)(ridge_off_crease, std::sqrt(crease_tree.squared_distance(m.point(v))));
+      ok = ok && ridge_off_crease / bbox_diagonal(original) <= 1e-9;
+    }
 
     // The promises that hold per move, where a move is judged against its
     // neighbours' positions of the same iteration, which the test does not see.
@@ -495,9 +524,10 @@ int main() {
                 << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
                 << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
                 << statistics.number_of_iterations << " iterations run, " << allowed << " allowed"
-                << ", one-iteration worsening test " << worsening_ok << ", vertices four edges apart " << isolated_ok
-                << ", convergence stop " << convergence_ok << ", transformed copy: promises kept " << transformed_ok
-                << ", off by " << transformed_difference << " (input rounding " << rounding_of_copy << ")" << std::endl;
+                << ", ridge vertex off the creases " << ridge_off_crease << ", one-iteration worsening test "
+                << worsening_ok << ", vertices four edges apart " << isolated_ok << ", convergence stop "
+                << convergence_ok << ", transformed copy: promises kept " << transformed_ok << ", off by "
+                << transformed_difference << " (input rounding " << rounding_of_copy << ")" << std::endl;
     }
   }
   std::cout << "test_ilsa_fuzz: " << cases << " cases (" << flip_only << " with the flip check as the only guard, "
