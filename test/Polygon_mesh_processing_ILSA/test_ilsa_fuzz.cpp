@@ -97,6 +97,14 @@ double star_mean(const Surface_mesh& m, vd v, const Point& at, double& shortest)
   return n ? sum / double(n) : 0.;
 }
 
+// Length of the shortest edge of `m`.
+double shortest_edge(const Surface_mesh& m) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (auto e : edges(m))
+    shortest = (std::min)(shortest, std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m)))));
+  return shortest;
+}
+
 // Vertices of `m` in random order, each kept unless it is within three edges
 // of one kept before: the kept vertices are at least four edges apart.
 std::vector<vd> isolated_vertices(const Surface_mesh& m, std::mt19937& rng) {
@@ -487,9 +495,7 @@ int main() {
       ++convergence_checked;
       const std::size_t k = statistics.number_of_iterations;
       double shortest = std::numeric_limits<double>::infinity();
-      for (auto e : edges(m))
-        shortest =
-            (std::min)(shortest, std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m)))));
+      shortest = (std::min)(shortest, shortest_edge(m));
       auto mean_after = [&](std::size_t j) {
         Surface_mesh x = original;
         const auto stats = with_floor([&](const auto& p) {
@@ -499,9 +505,7 @@ int main() {
                          .callback(std::function<bool(double)>()));
         });
         convergence_ok = convergence_ok && stats.number_of_iterations == j;
-        for (auto e : edges(x))
-          shortest =
-              (std::min)(shortest, std::sqrt(CGAL::squared_distance(x.point(source(e, x)), x.point(target(e, x)))));
+        shortest = (std::min)(shortest, shortest_edge(x));
         return PMP::mesh_quality_ilsa(x).mean_aspect_ratio;
       };
       const double last = mean_after(k - 1);
