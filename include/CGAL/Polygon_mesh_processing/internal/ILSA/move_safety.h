@@ -35,7 +35,7 @@ namespace internal {
 namespace ILSA {
 
 class Move_safety {
-  using Round = std::uint32_t; // rounds of the check, counted over the whole run
+  using Round = Claim_stamps::Round; // rounds of the check, counted over the whole run
 
 public:
   /// Relative area below which a triangle counts as collapsed: twice its area
@@ -96,10 +96,12 @@ public:
   /// projected positions, corrected in place. `moved` lists the vertices whose
   /// position changed. `project` re-projects a shortened move.
   ///
-  /// Each round runs in phases, each a loop whose iterations write only their
-  /// own element (user manual, "Parallel runs"): which faces offend, the cheap
-  /// tests of each vertex, the distances at `next` the fidelity tests share,
-  /// the fidelity tests, the shortening of the offending moves.
+  /// Each round runs in phases, each a loop over the vertices to check (or
+  /// the offenders) whose iterations write only their own vertex or the
+  /// elements they claim (user manual, "Parallel runs"): which faces offend,
+  /// the cheap tests of each vertex, the distances at `next` the fidelity tests
+  /// share, the fidelity tests, the shortening of the offending moves, the
+  /// stamps of the stars they change.
   template <class ConcurrencyTag, class Project>
   Counts enforce(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home,
                  const std::vector<Vec3>& target, const std::vector<std::size_t>& moved, std::vector<Vec3>& next,
@@ -112,13 +114,14 @@ public:
     // moved vertex. If the stamps could overflow in this call, they start again
     // from 0: stamps of earlier calls only need to be older than this call's.
     if (std::size_t(round_) + (halvings_ + 2) * (moved.size() + 1) > std::size_t((std::numeric_limits<Round>::max)())) {
-      for (auto* stamps : {&checked_, &face_round_, &deviation_round_, &vertex_round_, &changed_round_, &ring_changed_})
-        std::fill(stamps->begin(), stamps->end(), Round(0));
+      std::fill(checked_.begin(), checked_.end(), Round(0));
+      for (auto* stamps : {&face_round_, &deviation_round_, &vertex_round_, &changed_round_, &ring_changed_})
+        stamps->fill(0);
       round_ = 0;
     }
     const Round first_round = round_ + 1;
     const bool fidelity = std::isfinite(fidelity_tolerance_);
-    std::vector<std::size_t> to_check(moved), offenders, faces, vertices, undecided;
+    std::vector<std::size_t> to_check(moved), offenders;
     // Whether a value computed in round `computed` of this call still holds,
     // the positions it depends on having last changed in round `changed`.
     auto current = [&](std::size_t computed, std::size_t changed) {
@@ -131,18 +134,20 @@ public:
     while (!to_check.empty()) {
       ++round_;
       // The faces around the vertices to check: which offend (unless known
-      // from an earlier round of this call with the same positions).
-      faces.clear();
-      for (std::size_t v : to_check)
-        for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
-          if (!current(face_round_[*f], face_changed(*f))) face_round_[*f] = round_, faces.push_back(*f);
+      // from an earlier round of this call with the same positions), each
+      // computed by the iteration that claims it.
       const bool quality_tests = quality_floor_ > 0 || reject_worsening_;
-      parallel_for<ConcurrencyTag>(faces.size(), [&](std::size_t i) {
-        const std::size_t f = faces[i];
-        offends_[f] = offends(previous, next, f);
-        if (quality_tests) {
-          const auto& t = m_.faces[f];
-          quality_now_[f] = triangle_aspect_ratio(next[t[0]], next[t[1]], next[t[2]]);
+      parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
+        const std::size_t v = to_check[i];
+        for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+          const Round seen = face_round_[*f];
+          if (current(seen, face_changed(*f)) || !face_round_.template claim<ConcurrencyTag>(*f, seen, round_))
+            continue;
+          offends_[*f] = offends(previous, next, *f);
+          if (quality_tests) {
+            const auto& t = m_.faces[*f];
+            quality_now_[*f] = triangle_aspect_ratio(next[t[0]], next[t[1]], next[t[2]]);
+          }
         }
       });
       // A vertex is shortened when any face around it offends, so every moved
@@ -168,40 +173,39 @@ public:
       });
       if (fidelity) {
         // The distances at `next` that neighbouring vertices share, unless
-        // computed in an earlier round of this call with the same positions:
-        // a face's depends on its vertices, a vertex's on the vertices up to
-        // two edges away.
-        undecided.clear();
-        vertices.clear();
-        faces.clear();
-        for (std::size_t v : to_check) {
-          if (bad_[v]) continue;
-          undecided.push_back(v);
+        // computed in an earlier round of this call with the same positions
+        // (a face's depends on its vertices, a vertex's on the vertices up to
+        // two edges away), each computed by the iteration that claims it; then
+        // the tests that read them.
+        parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
+          const std::size_t v = to_check[i];
+          if (bad_[v]) return;
           auto share = [&](std::size_t w) {
-            if (!current(vertex_round_[w], ring_changed_[w])) vertex_round_[w] = round_, vertices.push_back(w);
+            const Round seen = vertex_round_[w];
+            if (current(seen, ring_changed_[w]) || !vertex_round_.template claim<ConcurrencyTag>(w, seen, round_))
+              return;
+            vertex_now_[w] = vertex_deviation(next, w, vertex_witness_[w]);
           };
           share(v);
           for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
-          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
-            if (!current(deviation_round_[*f], face_changed(*f))) deviation_round_[*f] = round_, faces.push_back(*f);
-        }
-        parallel_for<ConcurrencyTag>(vertices.size(), [&](std::size_t i) {
-          vertex_now_[vertices[i]] = vertex_deviation(next, vertices[i], vertex_witness_[vertices[i]]);
-        });
-        parallel_for<ConcurrencyTag>(faces.size(), [&](std::size_t i) {
-          const std::size_t f = faces[i];
-          if (face_within_tolerance(f)) {
-            face_now_[f] = 0.; // only ever compared with the tolerance
-            return;
+          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+            const Round seen = deviation_round_[*f];
+            if (current(seen, face_changed(*f)) || !deviation_round_.template claim<ConcurrencyTag>(*f, seen, round_))
+              continue;
+            if (face_within_tolerance(*f)) {
+              face_now_[*f] = 0.; // only ever compared with the tolerance
+              continue;
+            }
+            face_now_[*f] = face_deviation(next, *f, face_witness_[*f]);
+            const auto& t = m_.faces[*f];
+            face_bound_[*f] = rounded_up(face_now_[*f]);
+            face_travel_[*f] = {rounded_down(travel_[t[0]]), rounded_down(travel_[t[1]]),
+                                rounded_down(travel_[t[2]])};
           }
-          face_now_[f] = face_deviation(next, f, face_witness_[f]);
-          const auto& t = m_.faces[f];
-          face_bound_[f] = rounded_up(face_now_[f]);
-          face_travel_[f] = {rounded_down(travel_[t[0]]), rounded_down(travel_[t[1]]), rounded_down(travel_[t[2]])};
         });
-        parallel_for<ConcurrencyTag>(undecided.size(), [&](std::size_t i) {
-          const std::size_t v = undecided[i];
-          bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
+        parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
+          const std::size_t v = to_check[i];
+          if (!bad_[v]) bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
         });
       }
       offenders.clear();
@@ -223,16 +227,17 @@ public:
         travel_[v] += (next[v] - before).norm();
       });
       // Only the stars of the vertices just changed need a new look.
-      for (std::size_t v : offenders) {
-        changed_round_[v] = round_;
+      parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
+        const std::size_t v = offenders[i];
+        changed_round_.set(v, round_);
         auto ring = [&](std::size_t u) {
-          ring_changed_[u] = round_;
+          ring_changed_.set(u, round_);
           for (const Index* x = m_.vertex_neighbors.first(u); x != m_.vertex_neighbors.last(u); ++x)
-            ring_changed_[*x] = round_;
+            ring_changed_.set(*x, round_);
         };
         ring(v);
         for (const Index* u = m_.vertex_neighbors.first(v); u != m_.vertex_neighbors.last(v); ++u) ring(*u);
-      }
+      });
       to_check.clear();
       for (std::size_t v : offenders)
         for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
@@ -494,10 +499,10 @@ private:
   std::vector<unsigned char> bad_;                    // per vertex: its move offends, in the current round
   std::vector<Index> tries_;                          // halvings applied to a vertex's move
   std::vector<Round> checked_;                        // round in which a vertex was queued for a check
-  std::vector<Round> face_round_;                     // round in which a face's offending flag was computed
-  std::vector<Round> deviation_round_, vertex_round_; // round in which the deviations below were computed
-  std::vector<Round> changed_round_;                  // last round in which a vertex's move changed
-  std::vector<Round> ring_changed_;                   // the same, for any vertex up to two edges away
+  Claim_stamps face_round_;                           // round in which a face's offending flag was computed
+  Claim_stamps deviation_round_, vertex_round_;       // round in which the deviations below were computed
+  Claim_stamps changed_round_;                        // last round in which a vertex's move changed
+  Claim_stamps ring_changed_;                         // the same, for any vertex up to two edges away
   std::vector<double> face_now_, vertex_now_;         // face_deviation / vertex_deviation at `next`
   std::vector<Index> vertex_witness_;                 // face first looked at by vertex_deviation
   std::vector<std::array<Index, 4>> face_witness_;    // the same, for each point of face_deviation
