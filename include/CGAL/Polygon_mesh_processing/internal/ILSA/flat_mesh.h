@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -292,10 +293,22 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
     vertex_edge_pairs.emplace_back(r.a, ei);
     vertex_edge_pairs.emplace_back(r.b, ei);
   }
-  // One-ring neighbours in increasing index order.
-  std::vector<std::size_t> order(incidences.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return incidences[x] < incidences[y]; });
+  // One-ring neighbours in increasing index order: the incidences bucketed by
+  // vertex (counting sort), then each vertex's few sorted by neighbour (and by
+  // edge where two edges join the same two vertices) - the order a global sort
+  // by (vertex, neighbour) gives, at linear cost.
+  std::vector<std::size_t> order(incidences.size()), bucket(nv + 1, 0);
+  for (const auto& p : incidences) ++bucket[p.first + 1];
+  for (std::size_t i = 0; i < nv; ++i) bucket[i + 1] += bucket[i];
+  {
+    std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
+    for (std::size_t k = 0; k < incidences.size(); ++k) order[fill[incidences[k].first]++] = k;
+  }
+  for (std::size_t i = 0; i < nv; ++i)
+    std::sort(order.begin() + std::ptrdiff_t(bucket[i]), order.begin() + std::ptrdiff_t(bucket[i + 1]),
+              [&](std::size_t x, std::size_t y) {
+                return std::make_pair(incidences[x].second, x) < std::make_pair(incidences[y].second, y);
+              });
   std::vector<std::pair<std::size_t, std::size_t>> sorted_incidences(order.size()), sorted_edges(order.size());
   for (std::size_t k = 0; k < order.size(); ++k) {
     sorted_incidences[k] = incidences[order[k]];
