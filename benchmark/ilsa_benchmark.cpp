@@ -10,7 +10,8 @@
 // vertex distance to the input, Hausdorff distance, two-sided distance between
 // the input's sharp edges and the same edges of the result, max and mean;
 // distances relative to the bounding-box diagonal),
-// the median wall time of N runs, and ILSA's time over the peer's.
+// the median wall time of N runs (the methods take turns, run by run), and
+// ILSA's time over the peer's.
 // --scaling N prints instead the scaling table: the horse Loop-subdivided 0
 // to N times and perturbed, time per face and peak memory of ILSA and CGAL
 // tangential relaxation, each run once in a child process of its own.
@@ -294,20 +295,22 @@ int main(int argc, char** argv) {
     std::printf("| %s | input | %.4f | %.4f | %.2f | %.2f | | | | | | | | | |\n", name.c_str(), q0.min_aspect_ratio,
                 q0.mean_aspect_ratio, 100. * q0.share_below_threshold, q0.min_angle);
 
+    // The methods take turns (run 1 of each, then run 2 of each, ...), so
+    // that a drift of the machine's speed during the measurement weighs on
+    // every method alike and the ratios stay comparable.
     std::vector<double> times(methods.size());
     std::vector<std::size_t> iterations(methods.size());
     std::vector<Mesh> results(methods.size());
-    for (std::size_t k = 0; k < methods.size(); ++k) {
-      std::vector<double> t;
-      for (int r = 0; r < runs; ++r) {
+    std::vector<std::vector<double>> samples(methods.size());
+    for (int r = 0; r < runs; ++r)
+      for (std::size_t k = 0; k < methods.size(); ++k) {
         Mesh m = input;
         const auto start = std::chrono::steady_clock::now();
         iterations[k] = methods[k].run(m);
-        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        samples[k].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         if (r == 0) results[k] = m;
       }
-      times[k] = median(t);
-    }
+    for (std::size_t k = 0; k < methods.size(); ++k) times[k] = median(samples[k]);
     for (std::size_t k = 0; k < methods.size(); ++k) {
       Mesh& m = results[k];
       const auto q = PMP::mesh_quality_ilsa(m);
