@@ -199,8 +199,7 @@ public:
             face_now_[*f] = face_deviation(next, *f, face_witness_[*f]);
             const auto& t = m_.faces[*f];
             face_bound_[*f] = rounded_up(face_now_[*f]);
-            face_travel_[*f] = {rounded_down(travel_[t[0]]), rounded_down(travel_[t[1]]),
-                                rounded_down(travel_[t[2]])};
+            face_travel_[*f] = {rounded_down(travel_[t[0]]), rounded_down(travel_[t[1]]), rounded_down(travel_[t[2]])};
           }
         });
         parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
@@ -494,21 +493,21 @@ private:
   bool reject_worsening_;
   std::size_t halvings_;
   std::vector<Vec3> reference_;
-  std::vector<unsigned char> offends_;                // per face, in the current round
-  std::vector<double> quality_now_;                   // per face: its aspect ratio at `next`, likewise
-  std::vector<unsigned char> bad_;                    // per vertex: its move offends, in the current round
-  std::vector<Index> tries_;                          // halvings applied to a vertex's move
-  std::vector<Round> checked_;                        // round in which a vertex was queued for a check
-  Claim_stamps face_round_;                           // round in which a face's offending flag was computed
-  Claim_stamps deviation_round_, vertex_round_;       // round in which the deviations below were computed
-  Claim_stamps changed_round_;                        // last round in which a vertex's move changed
-  Claim_stamps ring_changed_;                         // the same, for any vertex up to two edges away
-  std::vector<double> face_now_, vertex_now_;         // face_deviation / vertex_deviation at `next`
-  std::vector<Index> vertex_witness_;                 // face first looked at by vertex_deviation
-  std::vector<std::array<Index, 4>> face_witness_;    // the same, for each point of face_deviation
-  std::vector<double> travel_;                        // per vertex: length of the path of its position at `next`
-  std::vector<float> face_bound_;                     // per face: face_deviation when last computed
-  std::vector<std::array<float, 3>> face_travel_;     // travel_ of the face's vertices then
+  std::vector<unsigned char> offends_;             // per face, in the current round
+  std::vector<double> quality_now_;                // per face: its aspect ratio at `next`, likewise
+  std::vector<unsigned char> bad_;                 // per vertex: its move offends, in the current round
+  std::vector<Index> tries_;                       // halvings applied to a vertex's move
+  std::vector<Round> checked_;                     // round in which a vertex was queued for a check
+  Claim_stamps face_round_;                        // round in which a face's offending flag was computed
+  Claim_stamps deviation_round_, vertex_round_;    // round in which the deviations below were computed
+  Claim_stamps changed_round_;                     // last round in which a vertex's move changed
+  Claim_stamps ring_changed_;                      // the same, for any vertex up to two edges away
+  std::vector<double> face_now_, vertex_now_;      // face_deviation / vertex_deviation at `next`
+  std::vector<Index> vertex_witness_;              // face first looked at by vertex_deviation
+  std::vector<std::array<Index, 4>> face_witness_; // the same, for each point of face_deviation
+  std::vector<double> travel_;                     // per vertex: length of the path of its position at `next`
+  std::vector<float> face_bound_;                  // per face: face_deviation when last computed
+  std::vector<std::array<float, 3>> face_travel_;  // travel_ of the face's vertices then
   std::vector<unsigned char> is_moved_;
   Round round_ = 0;
 };

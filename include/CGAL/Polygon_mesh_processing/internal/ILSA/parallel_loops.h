@@ -71,12 +71,12 @@ template <class ConcurrencyTag, class F> double parallel_max(std::size_t n, cons
   if constexpr (is_parallel<ConcurrencyTag>) {
     if (n > parallel_grain)
       return tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, n, parallel_grain), 0.,
-        [&](const tbb::blocked_range<std::size_t>& r, double m) {
-          for (std::size_t i = r.begin(); i != r.end(); ++i) m = (std::max)(m, f(i));
-          return m;
-        },
-        [](double a, double b) { return (std::max)(a, b); });
+          tbb::blocked_range<std::size_t>(0, n, parallel_grain), 0.,
+          [&](const tbb::blocked_range<std::size_t>& r, double m) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i) m = (std::max)(m, f(i));
+            return m;
+          },
+          [](double a, double b) { return (std::max)(a, b); });
   }
 #endif
   double m = 0;
