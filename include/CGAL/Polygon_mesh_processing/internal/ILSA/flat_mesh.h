@@ -276,7 +276,6 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
 
   m.on_border.assign(nv, 0);
   edge_list.clear();
-  incidences.clear();
   std::vector<std::pair<std::size_t, std::size_t>> vertex_edge_pairs;
   vertex_edge_pairs.reserve(2 * records.size());
   m.edges.reserve(records.size());
@@ -288,34 +287,23 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
     m.edges.push_back({Index(r.a), Index(r.b)});
     m.edge_faces.push_back({Index(r.f0), Index(r.f1)});
     edge_list.push_back(graph_edges[r.descriptor]);
-    incidences.emplace_back(r.a, r.b);
-    incidences.emplace_back(r.b, r.a);
     vertex_edge_pairs.emplace_back(r.a, ei);
     vertex_edge_pairs.emplace_back(r.b, ei);
   }
-  // One-ring neighbours in increasing index order: the incidences bucketed by
-  // vertex (counting sort), then each vertex's few sorted by neighbour (and by
-  // edge where two edges join the same two vertices) - the order a global sort
-  // by (vertex, neighbour) gives, at linear cost.
-  std::vector<std::size_t> order(incidences.size()), bucket(nv + 1, 0);
-  for (const auto& p : incidences) ++bucket[p.first + 1];
-  for (std::size_t i = 0; i < nv; ++i) bucket[i + 1] += bucket[i];
-  {
-    std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
-    for (std::size_t k = 0; k < incidences.size(); ++k) order[fill[incidences[k].first]++] = k;
+  // Edges around each vertex (bucketed in edge order), each vertex's few
+  // sorted by their other end, then by edge where two edges join the same two
+  // vertices: one-ring neighbours in increasing index order, at linear cost.
+  m.vertex_edges.assign(nv, vertex_edge_pairs);
+  m.vertex_neighbors.begin = m.vertex_edges.begin;
+  m.vertex_neighbors.items.resize(m.vertex_edges.items.size());
+  for (std::size_t i = 0; i < nv; ++i) {
+    auto other_end = [&](Index e) { return m.edges[e][0] == i ? m.edges[e][1] : m.edges[e][0]; };
+    const std::size_t first = m.vertex_edges.begin[i], last = m.vertex_edges.begin[i + 1];
+    auto& items = m.vertex_edges.items;
+    std::sort(items.begin() + std::ptrdiff_t(first), items.begin() + std::ptrdiff_t(last),
+              [&](Index x, Index y) { return std::make_pair(other_end(x), x) < std::make_pair(other_end(y), y); });
+    for (std::size_t j = first; j < last; ++j) m.vertex_neighbors.items[j] = other_end(items[j]);
   }
-  for (std::size_t i = 0; i < nv; ++i)
-    std::sort(order.begin() + std::ptrdiff_t(bucket[i]), order.begin() + std::ptrdiff_t(bucket[i + 1]),
-              [&](std::size_t x, std::size_t y) {
-                return std::make_pair(incidences[x].second, x) < std::make_pair(incidences[y].second, y);
-              });
-  std::vector<std::pair<std::size_t, std::size_t>> sorted_incidences(order.size()), sorted_edges(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    sorted_incidences[k] = incidences[order[k]];
-    sorted_edges[k] = vertex_edge_pairs[order[k]];
-  }
-  m.vertex_neighbors.assign(nv, sorted_incidences);
-  m.vertex_edges.assign(nv, sorted_edges);
 
   // A vertex whose faces do not all lie in one umbrella is non-manifold.
   m.non_manifold.assign(nv, 0);

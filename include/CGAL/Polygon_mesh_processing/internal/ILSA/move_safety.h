@@ -131,6 +131,12 @@ public:
       const auto& t = m_.faces[f];
       return std::size_t((std::max)({changed_round_[t[0]], changed_round_[t[1]], changed_round_[t[2]]}));
     };
+    // Whether the caller is to compute element `i` of `stamps` in this round:
+    // its value is not current, and no other iteration has claimed it.
+    auto claim = [&](Claim_stamps& stamps, std::size_t i, std::size_t changed) {
+      const Round seen = stamps[i];
+      return !current(seen, changed) && stamps.template claim<ConcurrencyTag>(i, seen, round_);
+    };
     while (!to_check.empty()) {
       ++round_;
       // The faces around the vertices to check: which offend (unless known
@@ -140,9 +146,7 @@ public:
       parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
         const std::size_t v = to_check[i];
         for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-          const Round seen = face_round_[*f];
-          if (current(seen, face_changed(*f)) || !face_round_.template claim<ConcurrencyTag>(*f, seen, round_))
-            continue;
+          if (!claim(face_round_, *f, face_changed(*f))) continue;
           offends_[*f] = offends(previous, next, *f);
           if (quality_tests) {
             const auto& t = m_.faces[*f];
@@ -181,17 +185,13 @@ public:
           const std::size_t v = to_check[i];
           if (bad_[v]) return;
           auto share = [&](std::size_t w) {
-            const Round seen = vertex_round_[w];
-            if (current(seen, ring_changed_[w]) || !vertex_round_.template claim<ConcurrencyTag>(w, seen, round_))
-              return;
-            vertex_now_[w] = vertex_deviation(next, w, vertex_witness_[w]);
+            if (claim(vertex_round_, w, ring_changed_[w]))
+              vertex_now_[w] = vertex_deviation(next, w, vertex_witness_[w]);
           };
           share(v);
           for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
           for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-            const Round seen = deviation_round_[*f];
-            if (current(seen, face_changed(*f)) || !deviation_round_.template claim<ConcurrencyTag>(*f, seen, round_))
-              continue;
+            if (!claim(deviation_round_, *f, face_changed(*f))) continue;
             if (face_within_tolerance(*f)) {
               face_now_[*f] = 0.; // only ever compared with the tolerance
               continue;
