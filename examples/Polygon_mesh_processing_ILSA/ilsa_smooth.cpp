@@ -385,7 +385,8 @@ int run(const Options& o) {
             << s.number_of_corner_vertices << " corner (" << s.number_of_kink_vertices << " crease kinks), "
             << s.number_of_boundary_vertices << " boundary\n"
             << "moves: " << s.number_of_moves << " accepted, " << s.number_of_shortened_moves << " shortened, "
-            << s.number_of_rejected_moves << " rejected by the safety check\n"
+            << s.number_of_rejected_moves << " rejected by the safety check ("
+            << s.number_of_moves_dropped_before_projection << " of them before projection)\n"
             << std::setprecision(3) << "time: " << seconds << " s for " << s.number_of_iterations << " iterations ("
             << (o.threads == 1 || !tbb_available ? std::string("sequential") : std::to_string(o.threads) + " threads")
             << ")\n";

@@ -39,7 +39,8 @@ template <class Mesh, class Smooth> void compare(const Mesh& input, const Smooth
               << std::endl;
     assert(differing == 0);
     assert(p.number_of_moves == s.number_of_moves && p.number_of_rejected_moves == s.number_of_rejected_moves &&
-           p.number_of_shortened_moves == s.number_of_shortened_moves);
+           p.number_of_shortened_moves == s.number_of_shortened_moves &&
+           p.number_of_moves_dropped_before_projection == s.number_of_moves_dropped_before_projection);
   }
 }
 

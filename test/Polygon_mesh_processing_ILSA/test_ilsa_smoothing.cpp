@@ -419,6 +419,30 @@ template <class Mesh> void test_worsening_moves_rejected() {
   assert(worsened_stars(unchecked) > 0);
 }
 
+// The worsening pre-test (user manual, "Safety check") only tries moves that
+// were dropped in the previous iteration, only when worsening moves are
+// rejected, and what it drops is counted among the rejected moves.
+template <class Mesh> void test_worsening_pretest() {
+  const Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
+  auto run = [&](const auto& np) {
+    Mesh m = original;
+    const auto s = PMP::smooth_surface_mesh_ilsa(m, np);
+    std::cout << "pre-test: " << s.number_of_moves_dropped_before_projection << " of "
+              << s.number_of_rejected_moves << " rejected moves dropped before projection" << std::endl;
+    return s;
+  };
+  const auto defaults = run(CGAL::parameters::default_values());
+  assert(defaults.number_of_moves_dropped_before_projection > 0);
+  assert(defaults.number_of_moves_dropped_before_projection < defaults.number_of_rejected_moves);
+  // Nothing was dropped before the first iteration.
+  const auto one = run(CGAL::parameters::number_of_iterations(1));
+  assert(one.number_of_rejected_moves > 0 && one.number_of_moves_dropped_before_projection == 0);
+  const auto accepting = run(CGAL::parameters::ilsa_reject_worsening_moves(false));
+  assert(accepting.number_of_rejected_moves > 0 && accepting.number_of_moves_dropped_before_projection == 0);
+  const auto unchecked = run(CGAL::parameters::use_safety_constraints(false));
+  assert(unchecked.number_of_rejected_moves == 0 && unchecked.number_of_moves_dropped_before_projection == 0);
+}
+
 // The stop (user manual, "Stopping early"): the run ends after the first
 // iteration that raises the mean aspect ratio by less than
 // ilsa_minimum_quality_gain; the iterations before it each gained more. The
@@ -497,6 +521,8 @@ int main() {
   test_convergence_stop<Polyhedron>();
   test_worsening_moves_rejected<Surface_mesh>();
   test_worsening_moves_rejected<Polyhedron>();
+  test_worsening_pretest<Surface_mesh>();
+  test_worsening_pretest<Polyhedron>();
   test_minimum_quality_kept<Surface_mesh>();
   test_minimum_quality_kept<Polyhedron>();
   test_fidelity_tolerance<Surface_mesh>();

@@ -344,10 +344,11 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   penalty.tolerance = tolerance;
 
   // T_new := T_ori. `home` is the original face (ridge: sharp edge) each vertex lies on.
-  std::vector<Vec3> pos = original.points, next, target(pos.size()), d, face_normals;
+  // `target`: v + d, the position before projection (fixed vertices: their own).
+  std::vector<Vec3> pos = original.points, next, target = pos, d, face_normals;
   std::vector<ilsa::Index> home(pos.size(), ilsa::npos), next_home;
   std::vector<std::size_t> moved;
-  std::vector<unsigned char> guarded(pos.size(), 0);
+  std::vector<unsigned char> guarded(pos.size(), 0), skipped(pos.size(), 0);
   for (std::size_t v : neighborhoods.adjustable) home[v] = projector.initial_home(v);
   ilsa::Ilsa_workspace ilsa_workspace;
   ilsa::Penalty_workspace penalty_workspace;
@@ -375,26 +376,37 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, face_normals, neighborhoods, penalty, d,
                                                          penalty_workspace);
 
-    // p(v): projection of v + d(v) onto T_ori (user manual, "Projection guard"), then the safety check.
+    // p(v): projection of v + d(v) onto T_ori (user manual, "Projection guard"), then the safety check; a
+    // move the check dropped in the previous iteration is first tried without projection (its pre-test).
+    ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {
+      const std::size_t v = neighborhoods.adjustable[i];
+      target[v] = pos[v] + d[v];
+    });
+    if (use_safety) safety.template prepare_pretest<ConcurrencyTag>(target);
     next = pos;
     next_home = home;
     ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {
       const std::size_t v = neighborhoods.adjustable[i];
-      target[v] = pos[v] + d[v];
+      skipped[v] = use_safety && safety.drop_before_projection(pos, target, v);
+      guarded[v] = 0;
+      if (skipped[v]) return;
       const auto r = project(v, target[v], pos[v], home[v]);
       next[v] = r.point;
       next_home[v] = ilsa::Index(r.home);
       guarded[v] = r.guarded;
     });
     moved.clear();
+    std::size_t skipped_moves = 0;
     for (std::size_t v : neighborhoods.adjustable) {
       stats.number_of_guarded_projections += guarded[v];
+      skipped_moves += skipped[v];
       if (next[v] != pos[v]) moved.push_back(v);
     }
     if (use_safety) {
       const auto counts = safety.template enforce<ConcurrencyTag>(pos, home, target, moved, next, next_home, project);
       stats.number_of_shortened_moves += counts.shortened;
-      stats.number_of_rejected_moves += counts.rejected;
+      stats.number_of_rejected_moves += counts.rejected + skipped_moves;
+      stats.number_of_moves_dropped_before_projection += skipped_moves;
       stats.number_of_moves += moved.size() - counts.rejected;
     } else {
       stats.number_of_moves += moved.size();

@@ -83,6 +83,8 @@ public:
     face_witness_.resize(m_.number_of_faces());
     for (Index f = 0; f < m_.number_of_faces(); ++f) face_witness_[f] = {f, f, f, f};
     tries_.assign(m_.number_of_vertices(), 0);
+    queued_.assign(m_.number_of_vertices(), 0);
+    dropped_in_.assign(m_.number_of_vertices(), 0);
     checked_.assign(m_.number_of_vertices(), 0);
     is_moved_.assign(m_.number_of_vertices(), 0);
   }
@@ -96,12 +98,13 @@ public:
   /// projected positions, corrected in place. `moved` lists the vertices whose
   /// position changed. `project` re-projects a shortened move.
   ///
-  /// Each round runs in phases, each a loop over the vertices to check (or
-  /// the offenders) whose iterations write only their own vertex or the
-  /// elements they claim (user manual, "Parallel runs"): which faces offend,
-  /// the cheap tests of each vertex, the distances at `next` the fidelity tests
-  /// share, the fidelity tests, the shortening of the offending moves, the
-  /// stamps of the stars they change.
+  /// A round runs either the cheap tests or the fidelity tests, then shortens
+  /// the offending moves. Each of its phases is a loop over the vertices to
+  /// test (or the offenders) whose iterations write only their own vertex or
+  /// the elements they claim (user manual, "Parallel runs"): which faces
+  /// offend and the cheap tests of each vertex, or the distances at `next` the
+  /// fidelity tests share and the fidelity tests; then the shortening of the
+  /// offending moves and the stamps of the stars they change.
   template <class ConcurrencyTag, class Project>
   Counts enforce(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home,
                  const std::vector<Vec3>& target, const std::vector<std::size_t>& moved, std::vector<Vec3>& next,
@@ -110,10 +113,13 @@ public:
       tries_[v] = 0, is_moved_[v] = 1;
       travel_[v] += (next[v] - previous[v]).norm();
     }
-    // Each round but the last shortens a move, at most halvings_ + 1 times per
-    // moved vertex. If the stamps could overflow in this call, they start again
-    // from 0: stamps of earlier calls only need to be older than this call's.
-    if (std::size_t(round_) + (halvings_ + 2) * (moved.size() + 1) > std::size_t((std::numeric_limits<Round>::max)())) {
+    // A round either shortens a move or is followed by a round that does or
+    // by none (a round of cheap tests without offenders hands over to the
+    // fidelity tests), so there are at most 2 (halvings_ + 1) rounds per moved
+    // vertex, plus two. If the stamps could overflow in this call, they start
+    // again from 0: stamps of earlier calls only need to be older than this call's.
+    if (std::size_t(round_) + 2 * (halvings_ + 2) * (moved.size() + 1) >
+        std::size_t((std::numeric_limits<Round>::max)())) {
       std::fill(checked_.begin(), checked_.end(), Round(0));
       for (auto* stamps : {&face_round_, &deviation_round_, &vertex_round_, &changed_round_, &ring_changed_})
         stamps->fill(0);
@@ -121,7 +127,10 @@ public:
     }
     const Round first_round = round_ + 1;
     const bool fidelity = std::isfinite(fidelity_tolerance_);
-    std::vector<std::size_t> to_check(moved), offenders;
+    const bool quality_tests = quality_floor_ > 0 || reject_worsening_;
+    // to_check: vertices for the cheap tests (flip, collapse, quality);
+    // to_measure: vertices that passed them since their last fidelity test.
+    std::vector<std::size_t> to_check(moved), to_measure, offenders;
     // Whether a value computed in round `computed` of this call still holds,
     // the positions it depends on having last changed in round `changed`.
     auto current = [&](std::size_t computed, std::size_t changed) {
@@ -137,53 +146,70 @@ public:
       const Round seen = stamps[i];
       return !current(seen, changed) && stamps.template claim<ConcurrencyTag>(i, seen, round_);
     };
-    while (!to_check.empty()) {
+    // The cheap tests run until no move fails them; only then do the costly
+    // fidelity tests run, once on every vertex that passed the cheap tests
+    // (user manual, "Safety check"): most moves the check drops fail a cheap
+    // test, and each one dropped changes the stars of its neighbours.
+    while (!to_check.empty() || !to_measure.empty()) {
       ++round_;
-      // The faces around the vertices to check: which offend (unless known
-      // from an earlier round of this call with the same positions), each
-      // computed by the iteration that claims it.
-      const bool quality_tests = quality_floor_ > 0 || reject_worsening_;
-      parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
-        const std::size_t v = to_check[i];
-        for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-          if (!claim(face_round_, *f, face_changed(*f))) continue;
-          offends_[*f] = offends(previous, next, *f);
-          if (quality_tests) {
-            const auto& t = m_.faces[*f];
-            quality_now_[*f] = triangle_aspect_ratio(next[t[0]], next[t[1]], next[t[2]]);
-          }
-        }
-      });
-      // A vertex is shortened when any face around it offends, so every moved
-      // vertex of an offending face is; then the quality tests.
-      parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
-        const std::size_t v = to_check[i];
-        bad_[v] = 0;
-        for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
-          if (offends_[*f]) bad_[v] = 1;
-        if (bad_[v]) return;
-        if (!quality_tests) return;
-        const Star_quality now = star_quality_now(v);
-        // The star's worst triangle may not get worse and end below the floor.
-        if (quality_floor_ > 0 && now.worst < quality_floor_ &&
-            now.worst < star_quality(previous, v, previous[v]).worst)
-          bad_[v] = 1;
-        else if (reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
-          // Dropped at once: a shorter step along a worsening direction rarely
-          // helps, and each halving costs a re-projection.
-          bad_[v] = 1;
-          tries_[v] = halvings_;
-        }
-      });
-      if (fidelity) {
-        // The distances at `next` that neighbouring vertices share, unless
-        // computed in an earlier round of this call with the same positions
-        // (a face's depends on its vertices, a vertex's on the vertices up to
-        // two edges away), each computed by the iteration that claims it; then
-        // the tests that read them.
+      const bool measuring = to_check.empty();
+      if (!measuring) {
+        // The faces around the vertices to check: which offend (unless known
+        // from an earlier round of this call with the same positions), each
+        // computed by the iteration that claims it.
         parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
           const std::size_t v = to_check[i];
+          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+            if (!claim(face_round_, *f, face_changed(*f))) continue;
+            offends_[*f] = offends(previous, next, *f);
+            if (quality_tests) {
+              const auto& t = m_.faces[*f];
+              quality_now_[*f] = triangle_aspect_ratio(next[t[0]], next[t[1]], next[t[2]]);
+            }
+          }
+        });
+        // A vertex is shortened when any face around it offends, so every moved
+        // vertex of an offending face is; then the quality tests.
+        parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
+          const std::size_t v = to_check[i];
+          bad_[v] = 0;
+          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+            if (offends_[*f]) bad_[v] = 1;
           if (bad_[v]) return;
+          if (!quality_tests) return;
+          const Star_quality now = star_quality_now(v);
+          // The star's worst triangle may not get worse and end below the floor.
+          if (quality_floor_ > 0 && now.worst < quality_floor_ &&
+              now.worst < star_quality(previous, v, previous[v]).worst)
+            bad_[v] = 1;
+          else if (reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
+            // Dropped at once: a shorter step along a worsening direction rarely
+            // helps, and each halving costs a re-projection.
+            bad_[v] = 1;
+            tries_[v] = halvings_;
+          }
+        });
+        if (fidelity)
+          for (std::size_t v : to_check)
+            if (!bad_[v] && !queued_[v]) {
+              queued_[v] = 1;
+              to_measure.push_back(v);
+            }
+      } else {
+        // The fidelity tests, on the vertices that passed the cheap tests and
+        // were not dropped since. First the distances at `next` that
+        // neighbouring vertices share, unless computed in an earlier round of
+        // this call with the same positions (a face's depends on its vertices,
+        // a vertex's on the vertices up to two edges away), each computed by
+        // the iteration that claims it; then the tests that read them.
+        std::size_t kept = 0;
+        for (std::size_t v : to_measure) {
+          queued_[v] = 0;
+          if (tries_[v] <= halvings_) to_measure[kept++] = v;
+        }
+        to_measure.resize(kept);
+        parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
+          const std::size_t v = to_measure[i];
           auto share = [&](std::size_t w) {
             if (claim(vertex_round_, w, ring_changed_[w]))
               vertex_now_[w] = vertex_deviation(next, w, vertex_witness_[w]);
@@ -202,14 +228,15 @@ public:
             face_travel_[*f] = {rounded_down(travel_[t[0]]), rounded_down(travel_[t[1]]), rounded_down(travel_[t[2]])};
           }
         });
-        parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
-          const std::size_t v = to_check[i];
-          if (!bad_[v]) bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
+        parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
+          const std::size_t v = to_measure[i];
+          bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
         });
       }
       offenders.clear();
-      for (std::size_t v : to_check)
+      for (std::size_t v : measuring ? to_measure : to_check)
         if (bad_[v]) offenders.push_back(v);
+      if (measuring) to_measure.clear();
       parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
         const std::size_t v = offenders[i];
         ++tries_[v];
@@ -246,15 +273,48 @@ public:
               to_check.push_back(w);
             }
     }
+    ++call_;
     Counts counts;
     for (std::size_t v : moved) {
       is_moved_[v] = 0;
-      if (tries_[v] > halvings_)
+      if (tries_[v] > halvings_) {
         ++counts.rejected;
-      else if (tries_[v] > 0)
+        dropped_in_[v] = call_;
+      } else if (tries_[v] > 0)
         ++counts.shortened;
     }
     return counts;
+  }
+
+  /// The worsening pre-test (user manual, "Safety check"), before projection:
+  /// `target` holds the unprojected positions v + d of all vertices (the
+  /// current position for a fixed one). Afterwards drop_before_projection()
+  /// may be asked about any vertex.
+  template <class ConcurrencyTag> void prepare_pretest(const std::vector<Vec3>& target) {
+    if (!reject_worsening_ || call_ == 0) return;
+    // quality_now_ is free between two calls of enforce(): a call only reads
+    // the values it computed itself (see `current` there).
+    parallel_for<ConcurrencyTag>(m_.number_of_faces(), [&](std::size_t f) {
+      const auto& t = m_.faces[f];
+      quality_now_[f] = triangle_aspect_ratio(target[t[0]], target[t[1]], target[t[2]]);
+    });
+  }
+
+  /// Whether to drop the move of `v` to `target[v]` without projecting and
+  /// checking it: its move was dropped in the previous iteration, and the
+  /// mean aspect ratio of its star, every vertex at its target, is lower than
+  /// with `v` staying at `pos[v]`. Every move made still passes enforce(),
+  /// so the test can cost quality, never a guarantee.
+  bool drop_before_projection(const std::vector<Vec3>& pos, const std::vector<Vec3>& target, std::size_t v) const {
+    if (!reject_worsening_ || call_ == 0 || dropped_in_[v] != call_) return false;
+    double moving = 0, staying = 0;
+    auto point = [&](std::size_t w) -> const Vec3& { return w == v ? pos[v] : target[w]; };
+    for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+      const auto& t = m_.faces[*f];
+      moving += quality_now_[*f];
+      staying += triangle_aspect_ratio(point(t[0]), point(t[1]), point(t[2]));
+    }
+    return moving < staying;
   }
 
   /// Orientation of face `f` at positions `pos` against the original surface.
@@ -494,10 +554,12 @@ private:
   std::size_t halvings_;
   std::vector<Vec3> reference_;
   std::vector<unsigned char> offends_;             // per face, in the current round
-  std::vector<double> quality_now_;                // per face: its aspect ratio at `next`, likewise
+  std::vector<double> quality_now_;                // per face: its aspect ratio at `next`, likewise (at the
+                                                   // targets between two calls, for the pre-test)
   std::vector<unsigned char> bad_;                 // per vertex: its move offends, in the current round
   std::vector<Index> tries_;                       // halvings applied to a vertex's move
   std::vector<Round> checked_;                     // round in which a vertex was queued for a check
+  std::vector<unsigned char> queued_;              // per vertex: in the list for the fidelity tests
   Claim_stamps face_round_;                        // round in which a face's offending flag was computed
   Claim_stamps deviation_round_, vertex_round_;    // round in which the deviations below were computed
   Claim_stamps changed_round_;                     // last round in which a vertex's move changed
@@ -509,7 +571,9 @@ private:
   std::vector<float> face_bound_;                  // per face: face_deviation when last computed
   std::vector<std::array<float, 3>> face_travel_;  // travel_ of the face's vertices then
   std::vector<unsigned char> is_moved_;
+  std::vector<std::uint32_t> dropped_in_; // per vertex: the last call of enforce() that dropped its move
   Round round_ = 0;
+  std::uint32_t call_ = 0; // calls of enforce() so far
 };
 
 } // namespace ILSA
