@@ -419,7 +419,7 @@ template <class Mesh> void test_worsening_moves_rejected() {
   assert(worsened_stars(unchecked) > 0);
 }
 
-// The worsening pre-test (user manual, "Safety check") only tries moves that
+// The worsening pre-test (user manual, "Worsening pre-test") only tries moves that
 // were dropped in the previous iteration, only when worsening moves are
 // rejected, and what it drops is counted among the rejected moves.
 template <class Mesh> void test_worsening_pretest() {
@@ -427,8 +427,8 @@ template <class Mesh> void test_worsening_pretest() {
   auto run = [&](const auto& np) {
     Mesh m = original;
     const auto s = PMP::smooth_surface_mesh_ilsa(m, np);
-    std::cout << "pre-test: " << s.number_of_moves_dropped_before_projection << " of "
-              << s.number_of_rejected_moves << " rejected moves dropped before projection" << std::endl;
+    std::cout << "pre-test: " << s.number_of_moves_dropped_before_projection << " of " << s.number_of_rejected_moves
+              << " rejected moves dropped before projection" << std::endl;
     return s;
   };
   const auto defaults = run(CGAL::parameters::default_values());

@@ -64,12 +64,12 @@ struct ILSA_statistics {
   std::size_t number_of_ridge_vertices = 0;
   std::size_t number_of_corner_vertices = 0;
   std::size_t number_of_boundary_vertices = 0;
-  std::size_t number_of_kink_vertices = 0;       ///< corners among them that are crease kinks (two sharp edges)
-  std::size_t number_of_iterations = 0;          ///< global iterations run
-  std::size_t number_of_moves = 0;               ///< accepted vertex moves, summed over the iterations
-  std::size_t number_of_shortened_moves = 0;     ///< moves accepted only after being shortened by the safety check
-  std::size_t number_of_rejected_moves = 0;      ///< moves dropped by the safety check
-  /// those of them dropped by its worsening pre-test, before projection (user manual, "Safety check")
+  std::size_t number_of_kink_vertices = 0;   ///< corners among them that are crease kinks (two sharp edges)
+  std::size_t number_of_iterations = 0;      ///< global iterations run
+  std::size_t number_of_moves = 0;           ///< accepted vertex moves, summed over the iterations
+  std::size_t number_of_shortened_moves = 0; ///< moves accepted only after being shortened by the safety check
+  std::size_t number_of_rejected_moves = 0;  ///< moves dropped by the safety check
+  /// those of them dropped by its worsening pre-test, before projection (user manual, "Worsening pre-test")
   std::size_t number_of_moves_dropped_before_projection = 0;
   std::size_t number_of_guarded_projections = 0; ///< projections the sheet guard kept local
 };

@@ -148,8 +148,9 @@ public:
     };
     // The cheap tests run until no move fails them; only then do the costly
     // fidelity tests run, once on every vertex that passed the cheap tests
-    // (user manual, "Safety check"): most moves the check drops fail a cheap
-    // test, and each one dropped changes the stars of its neighbours.
+    // (user manual, "Order of the safety check's tests"): most moves the check
+    // drops fail a cheap test, and each one dropped changes the stars of its
+    // neighbours.
     while (!to_check.empty() || !to_measure.empty()) {
       ++round_;
       const bool measuring = to_check.empty();
@@ -286,7 +287,7 @@ public:
     return counts;
   }
 
-  /// The worsening pre-test (user manual, "Safety check"), before projection:
+  /// The worsening pre-test (user manual, "Worsening pre-test"), before projection:
   /// `target` holds the unprojected positions v + d of all vertices (the
   /// current position for a fixed one). Afterwards drop_before_projection()
   /// may be asked about any vertex.
