@@ -431,15 +431,16 @@ template <class Mesh> void test_worsening_pretest() {
               << " rejected moves dropped before projection" << std::endl;
     return s;
   };
-  const auto defaults = run(CGAL::parameters::default_values());
+  // Three iterations are enough to see it work (and keep the sanitizer run short).
+  const auto defaults = run(CGAL::parameters::number_of_iterations(3));
   assert(defaults.number_of_moves_dropped_before_projection > 0);
   assert(defaults.number_of_moves_dropped_before_projection < defaults.number_of_rejected_moves);
   // Nothing was dropped before the first iteration.
   const auto one = run(CGAL::parameters::number_of_iterations(1));
   assert(one.number_of_rejected_moves > 0 && one.number_of_moves_dropped_before_projection == 0);
-  const auto accepting = run(CGAL::parameters::ilsa_reject_worsening_moves(false));
+  const auto accepting = run(CGAL::parameters::number_of_iterations(3).ilsa_reject_worsening_moves(false));
   assert(accepting.number_of_rejected_moves > 0 && accepting.number_of_moves_dropped_before_projection == 0);
-  const auto unchecked = run(CGAL::parameters::use_safety_constraints(false));
+  const auto unchecked = run(CGAL::parameters::number_of_iterations(3).use_safety_constraints(false));
   assert(unchecked.number_of_rejected_moves == 0 && unchecked.number_of_moves_dropped_before_projection == 0);
 }
 
