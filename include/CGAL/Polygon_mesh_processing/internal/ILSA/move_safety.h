@@ -308,14 +308,8 @@ public:
   /// so the test can cost quality, never a guarantee.
   bool drop_before_projection(const std::vector<Vec3>& pos, const std::vector<Vec3>& target, std::size_t v) const {
     if (!reject_worsening_ || call_ == 0 || dropped_in_[v] != call_) return false;
-    double moving = 0, staying = 0;
-    auto point = [&](std::size_t w) -> const Vec3& { return w == v ? pos[v] : target[w]; };
-    for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-      const auto& t = m_.faces[*f];
-      moving += quality_now_[*f];
-      staying += triangle_aspect_ratio(point(t[0]), point(t[1]), point(t[2]));
-    }
-    return moving < staying;
+    // The worsening test of enforce(), with the targets for `next` and `pos[v]` for `previous[v]`.
+    return star_quality_now(v).mean < star_quality(target, v, pos[v]).mean;
   }
 
   /// Orientation of face `f` at positions `pos` against the original surface.
