@@ -3,6 +3,7 @@
 // face, better mean quality; planar grids stay planar (also without the
 // length term, which switches the penalty solve to SVD); Surface_mesh and
 // Polyhedron_3 agree; the result does not depend on the vertex order (Jacobi);
+// the flat copy's renumbering for locality;
 // named parameters chain in both orders; the range overload fixes the rest;
 // the default quality floor keeps the input's minimum aspect ratio; no move
 // that lowers its star's mean quality is kept; the convergence stop; the
@@ -134,6 +135,52 @@ void test_vertex_order() {
   std::cout << "vertex order: max difference " << d << " (largest move " << moved << ")\n";
   assert(moved > 1e-3);
   assert(d <= 1e-12 * bbox_diagonal(a));
+}
+
+// The flat copy's renumbering for memory locality (user manual, "Performance"):
+// a permutation of the vertices and of the faces, each face numbered when its
+// first vertex is reached, the same whichever corner a face starts at, and
+// neighbours close in the new order even when the input order is shuffled.
+void test_locality_order() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  const Soup soup = soup_of(read_mesh<Surface_mesh>(data_file("fandisk.off")));
+  const std::size_t n = soup.points.size();
+  std::vector<std::size_t> shuffle(n);
+  std::iota(shuffle.begin(), shuffle.end(), std::size_t(0));
+  std::shuffle(shuffle.begin(), shuffle.end(), std::mt19937(11));
+  std::vector<std::array<ilsa::Index, 3>> faces, rotated;
+  for (const auto& t : soup.triangles) {
+    faces.push_back({ilsa::Index(shuffle[t[0]]), ilsa::Index(shuffle[t[1]]), ilsa::Index(shuffle[t[2]])});
+    rotated.push_back({faces.back()[1], faces.back()[2], faces.back()[0]});
+  }
+  const ilsa::Locality_order o = ilsa::locality_order(n, faces), r = ilsa::locality_order(n, rotated);
+  assert(o.vertices == r.vertices && o.faces == r.faces);
+  auto is_permutation = [](const std::vector<ilsa::Index>& order, const std::vector<ilsa::Index>& number) {
+    std::vector<char> seen(order.size(), 0);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      if (order[i] >= order.size() || seen[order[i]] || number[order[i]] != i) return false;
+      seen[order[i]] = 1;
+    }
+    return order.size() == number.size();
+  };
+  assert(is_permutation(o.vertices, o.vertex_number));
+  assert(is_permutation(o.faces, o.face_number));
+  // Mean spread of the vertex numbers of a face, before and after.
+  double before = 0, after = 0;
+  std::size_t first_before = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto& t = faces[o.faces[f]];
+    const std::array<ilsa::Index, 3> u{o.vertex_number[t[0]], o.vertex_number[t[1]], o.vertex_number[t[2]]};
+    const std::size_t first = *std::min_element(u.begin(), u.end());
+    assert(first >= first_before); // numbered when its first vertex is reached
+    first_before = first;
+    before += double(*std::max_element(t.begin(), t.end()) - *std::min_element(t.begin(), t.end()));
+    after += double(*std::max_element(u.begin(), u.end()) - first);
+  }
+  before /= double(faces.size());
+  after /= double(faces.size());
+  std::cout << "locality order: mean spread of a face's vertex numbers " << before << " -> " << after << "\n";
+  assert(after < before / 10);
 }
 
 // Named parameters chain in both orders with CGAL's own, and take effect.
@@ -540,6 +587,7 @@ int main() {
   test_sphere<Polyhedron>();
   test_mesh_types_agree();
   test_vertex_order();
+  test_locality_order();
   test_named_parameter_chaining<Surface_mesh>();
   test_named_parameter_chaining<Polyhedron>();
   test_vertex_range<Surface_mesh>();

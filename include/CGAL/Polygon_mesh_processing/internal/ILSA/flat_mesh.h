@@ -185,6 +185,54 @@ void number_in_order(Indices& indices, const std::vector<Descriptor>& list, cons
   }
 }
 
+/// A renumbering of the vertices and faces of a mesh: `vertices[i]` is the
+/// old number of new vertex `i`, `vertex_number` its inverse; the same for faces.
+struct Locality_order {
+  std::vector<Index> vertices, vertex_number, faces, face_number;
+};
+
+/// Breadth-first order over the faces of `faces` (`n` vertices): each component
+/// from its lowest vertex, the new vertices of a face in increasing old number
+/// (whatever corner the face starts at), the faces of a vertex in their order;
+/// a face is numbered when its first vertex is reached. Isolated vertices keep
+/// their place among the seeds.
+inline Locality_order locality_order(std::size_t n, const std::vector<std::array<Index, 3>>& faces) {
+  Adjacency around; // faces of each vertex, in face order
+  {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    pairs.reserve(3 * faces.size());
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      for (Index v : faces[f]) pairs.emplace_back(v, f);
+    around.assign(n, pairs);
+  }
+  Locality_order o;
+  o.vertex_number.assign(n, npos);
+  o.face_number.assign(faces.size(), npos);
+  o.vertices.reserve(n);
+  o.faces.reserve(faces.size());
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (o.vertex_number[seed] != npos) continue;
+    o.vertex_number[seed] = Index(o.vertices.size());
+    o.vertices.push_back(Index(seed));
+    for (std::size_t head = o.vertices.size() - 1; head < o.vertices.size(); ++head) {
+      const Index v = o.vertices[head];
+      for (const Index* f = around.first(v); f != around.last(v); ++f) {
+        if (o.face_number[*f] != npos) continue;
+        o.face_number[*f] = Index(o.faces.size());
+        o.faces.push_back(*f);
+        std::array<Index, 3> t = faces[*f];
+        std::sort(t.begin(), t.end());
+        for (Index w : t)
+          if (o.vertex_number[w] == npos) {
+            o.vertex_number[w] = Index(o.vertices.size());
+            o.vertices.push_back(w);
+          }
+      }
+    }
+  }
+  return o;
+}
+
 /// Builds the flat copy of `tm`. `vertex_list` receives the vertex descriptors in
 /// index order, `vertex_index` the flat numbering of the vertices (its `map` must
 /// be set), `edge_list` the edge descriptors. `face_index_map` numbers the faces.
@@ -226,16 +274,14 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
     const double diagonal = (hi - lo).norm();
     m.scale = diagonal > 0 ? diagonal : 1.;
   }
-  m.points.resize(nv);
-  for (std::size_t i = 0; i < nv; ++i) m.points[i] = (raw[i] - m.center) / m.scale;
 
+  // The faces, with the vertices numbered in the order of `vertices(tm)` for now.
   const std::vector<face_descriptor> face_list(faces(tm).begin(), faces(tm).end());
   require_indexable(3 * face_list.size(), "face corners");
   Flat_indices<FaceIndexMap> face_index{face_index_map, {}};
   number_in_order(face_index, face_list, "face_index_map");
-  std::vector<std::pair<std::size_t, std::size_t>> incidences;
-  incidences.reserve(3 * face_list.size());
-  m.faces.reserve(face_list.size());
+  std::vector<std::array<Index, 3>> input_faces;
+  input_faces.reserve(face_list.size());
   for (face_descriptor f : face_list) {
     std::array<Index, 3> t{};
     std::size_t k = 0;
@@ -244,10 +290,37 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
       ++k;
     }
     if (k != 3)
-      throw ILSA_error("face " + std::to_string(m.faces.size()) + " has " + std::to_string(k) +
+      throw ILSA_error("face " + std::to_string(input_faces.size()) + " has " + std::to_string(k) +
                        " vertices; only triangle meshes are supported (triangulate first)");
-    for (std::size_t c = 0; c < 3; ++c) incidences.emplace_back(t[c], m.faces.size());
-    m.faces.push_back(t);
+    input_faces.push_back(t);
+  }
+
+  // Renumbering for memory locality (user manual, "Performance"): every stage
+  // visits the vertices in index order and reads their faces and neighbours,
+  // so neighbours should have close indices. Vertices in breadth-first order
+  // over the faces (each component from its first vertex in the order of
+  // `vertices(tm)`), faces in the order they are first reached. The order
+  // depends only on the order of the vertices and faces, not on which corner
+  // the graph starts a face at.
+  const Locality_order order = locality_order(nv, input_faces);
+  {
+    std::vector<typename GT::vertex_descriptor> renumbered(nv);
+    m.points.resize(nv);
+    for (std::size_t i = 0; i < nv; ++i) {
+      renumbered[i] = vertex_list[order.vertices[i]];
+      m.points[i] = (raw[order.vertices[i]] - m.center) / m.scale;
+    }
+    vertex_list.swap(renumbered);
+  }
+  for (auto& i : vertex_index.flat) i = order.vertex_number[i];
+  for (auto& i : face_index.flat) i = order.face_number[i];
+  std::vector<std::pair<std::size_t, std::size_t>> incidences;
+  incidences.reserve(3 * input_faces.size());
+  m.faces.resize(input_faces.size());
+  for (std::size_t f = 0; f < input_faces.size(); ++f) {
+    const auto& t = input_faces[order.faces[f]];
+    m.faces[f] = {order.vertex_number[t[0]], order.vertex_number[t[1]], order.vertex_number[t[2]]};
+    for (std::size_t c = 0; c < 3; ++c) incidences.emplace_back(m.faces[f][c], f);
   }
   m.vertex_faces.assign(nv, incidences);
 
