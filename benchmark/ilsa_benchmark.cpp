@@ -14,7 +14,8 @@
 // ILSA's time over the peer's.
 // --scaling N prints instead the scaling table: the horse Loop-subdivided 0
 // to N times and perturbed, time per face and peak memory of ILSA and CGAL
-// tangential relaxation, each run once in a child process of its own.
+// tangential relaxation, each run once in a child process of its own; then
+// the horse again with its vertices and faces in a random order.
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -145,6 +146,24 @@ Mesh subdivided_horse(unsigned levels) {
   return m;
 }
 
+// `m` with its vertices and faces in a random order (same points, same faces).
+Mesh shuffled(const Mesh& m) {
+  std::mt19937 rng(1);
+  std::vector<Mesh::Vertex_index> order(m.vertices().begin(), m.vertices().end());
+  std::shuffle(order.begin(), order.end(), rng);
+  Mesh s;
+  std::map<Mesh::Vertex_index, Mesh::Vertex_index> added;
+  for (auto v : order) added[v] = s.add_vertex(m.point(v));
+  std::vector<Mesh::Face_index> fs(m.faces().begin(), m.faces().end());
+  std::shuffle(fs.begin(), fs.end(), rng);
+  for (auto f : fs) {
+    std::vector<Mesh::Vertex_index> corners;
+    for (auto w : vertices_around_face(halfedge(f, m), m)) corners.push_back(added[w]);
+    s.add_face(corners);
+  }
+  return s;
+}
+
 // Scaling table: time per face and peak memory of ILSA (sequential and
 // parallel) and CGAL tangential relaxation (10 iterations) on the horse and
 // its subdivisions, each measurement in a child process.
@@ -152,12 +171,10 @@ void run_scaling(const std::string& self, unsigned max_level) {
   std::cout << "\n| mesh | faces | method | time s | iterations run | time per face µs | time per face / horse's | "
                "peak memory MB | peak / (load + AABB tree) |\n|---|---|---|---|---|---|---|---|---|\n";
   std::map<std::string, double> horse_per_face;
-  for (unsigned level = 0; level <= max_level; ++level) {
-    const Mesh m = subdivided_horse(level);
-    const std::string file =
-        (std::filesystem::temp_directory_path() / ("ilsa_scaling_" + std::to_string(level) + ".ply")).string();
+  // One group of rows; the first group (the horse) is the reference of "time per face / horse's".
+  auto measure = [&](const Mesh& m, const std::string& name, const std::string& tag) {
+    const std::string file = (std::filesystem::temp_directory_path() / ("ilsa_scaling_" + tag + ".ply")).string();
     CGAL::IO::write_polygon_mesh(file, m, CGAL::parameters::use_binary_mode(true));
-    const std::string name = level == 0 ? "horse, perturbed" : "horse, Loop " + std::to_string(level) + "x, perturbed";
     std::vector<std::string> modes{"load", "ilsa"};
 #ifdef CGAL_LINKED_WITH_TBB
     modes.push_back("ilsa-parallel");
@@ -181,7 +198,7 @@ void run_scaling(const std::string& self, unsigned max_level) {
         continue;
       }
       const double per_face = 1e6 * seconds / double(num_faces(m));
-      if (level == 0) horse_per_face[mode] = per_face;
+      if (!horse_per_face.count(mode)) horse_per_face[mode] = per_face;
       const std::string label = mode == "ilsa"            ? "ILSA (defaults)"
                                 : mode == "ilsa-parallel" ? "ILSA (defaults), Parallel_tag"
                                                           : "CGAL tangential relaxation";
@@ -191,7 +208,14 @@ void run_scaling(const std::string& self, unsigned max_level) {
       std::fflush(stdout);
     }
     std::remove(file.c_str());
-  }
+  };
+  for (unsigned level = 0; level <= max_level; ++level)
+    measure(subdivided_horse(level),
+            level == 0 ? "horse, perturbed" : "horse, Loop " + std::to_string(level) + "x, perturbed",
+            std::to_string(level));
+  // The same horse with its vertices and faces listed in a random order: the
+  // cost of an input whose order has no locality.
+  measure(shuffled(subdivided_horse(0)), "horse, perturbed, shuffled order", "shuffled");
 }
 
 } // namespace
