@@ -53,14 +53,26 @@ struct Adjacency {
   const Index* first(std::size_t i) const { return items.data() + begin[i]; }
   const Index* last(std::size_t i) const { return items.data() + begin[i + 1]; }
 
-  // Builds the adjacency of `n` elements from (element, item) pairs, keeping their order.
-  void assign(std::size_t n, const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
+  // Builds the adjacency of `n` elements from the (element, item) pairs that
+  // `pairs(emit)` passes to `emit(element, item)`, keeping their order; `pairs`
+  // is called twice (a count, then the fill), so no list of pairs is stored.
+  template <class Pairs> void assign(std::size_t n, const Pairs& pairs) {
     begin.assign(n + 1, 0);
-    for (const auto& p : pairs) ++begin[p.first + 1];
+    pairs([&](std::size_t element, std::size_t) { ++begin[element + 1]; });
     for (std::size_t i = 0; i < n; ++i) begin[i + 1] += begin[i];
-    items.resize(pairs.size());
-    std::vector<Index> fill(begin.begin(), begin.end() - 1);
-    for (const auto& p : pairs) items[fill[p.first]++] = Index(p.second);
+    items.resize(begin[n]);
+    pairs([&](std::size_t element, std::size_t item) { items[begin[element]++] = Index(item); });
+    for (std::size_t i = n; i > 0; --i) begin[i] = begin[i - 1]; // the fill advanced each begin to the next
+    begin[0] = 0;
+  }
+
+  // The faces around each of `n` vertices, in face order (a face whose vertex
+  // repeats is listed once per corner).
+  void assign_faces(std::size_t n, const std::vector<std::array<Index, 3>>& faces) {
+    assign(n, [&](auto emit) {
+      for (std::size_t f = 0; f < faces.size(); ++f)
+        for (Index v : faces[f]) emit(v, f);
+    });
   }
 };
 
@@ -198,13 +210,7 @@ struct Locality_order {
 /// their place among the seeds.
 inline Locality_order locality_order(std::size_t n, const std::vector<std::array<Index, 3>>& faces) {
   Adjacency around; // faces of each vertex, in face order
-  {
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
-    pairs.reserve(3 * faces.size());
-    for (std::size_t f = 0; f < faces.size(); ++f)
-      for (Index v : faces[f]) pairs.emplace_back(v, f);
-    around.assign(n, pairs);
-  }
+  around.assign_faces(n, faces);
   Locality_order o;
   o.vertex_number.assign(n, npos);
   o.face_number.assign(faces.size(), npos);
@@ -314,22 +320,20 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   }
   for (auto& i : vertex_index.flat) i = order.vertex_number[i];
   for (auto& i : face_index.flat) i = order.face_number[i];
-  std::vector<std::pair<std::size_t, std::size_t>> incidences;
-  incidences.reserve(3 * input_faces.size());
   m.faces.resize(input_faces.size());
   for (std::size_t f = 0; f < input_faces.size(); ++f) {
     const auto& t = input_faces[order.faces[f]];
     m.faces[f] = {order.vertex_number[t[0]], order.vertex_number[t[1]], order.vertex_number[t[2]]};
-    for (std::size_t c = 0; c < 3; ++c) incidences.emplace_back(m.faces[f][c], f);
   }
-  m.vertex_faces.assign(nv, incidences);
+  std::vector<std::array<Index, 3>>().swap(input_faces);
+  m.vertex_faces.assign_faces(nv, m.faces);
 
   // Edges in a canonical order (by endpoint indices, lower index first, the
   // face on the lower-to-higher halfedge first), whatever order the graph
   // lists them in: meshes of different types with the same vertices and faces
   // give bit-identical results.
   struct Edge_record {
-    std::size_t a, b, f0, f1, descriptor;
+    Index a, b, f0, f1, descriptor;
   };
   const std::vector<typename GT::edge_descriptor> graph_edges(edges(tm).begin(), edges(tm).end());
   std::vector<Edge_record> records;
@@ -339,9 +343,9 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
     auto h = halfedge(graph_edges[k], tm);
     if (vertex_index(source(h, tm)) > vertex_index(target(h, tm))) h = opposite(h, tm);
     const face_descriptor f0 = face(h, tm), f1 = face(opposite(h, tm), tm);
-    records.push_back({vertex_index(source(h, tm)), vertex_index(target(h, tm)),
-                       f0 == GT::null_face() ? npos : face_index(f0), f1 == GT::null_face() ? npos : face_index(f1),
-                       k});
+    records.push_back({Index(vertex_index(source(h, tm))), Index(vertex_index(target(h, tm))),
+                       f0 == GT::null_face() ? npos : Index(face_index(f0)),
+                       f1 == GT::null_face() ? npos : Index(face_index(f1)), Index(k)});
   }
   std::sort(records.begin(), records.end(), [](const Edge_record& x, const Edge_record& y) {
     return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
@@ -349,24 +353,22 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
 
   m.on_border.assign(nv, 0);
   edge_list.clear();
-  std::vector<std::pair<std::size_t, std::size_t>> vertex_edge_pairs;
-  vertex_edge_pairs.reserve(2 * records.size());
   m.edges.reserve(records.size());
   m.edge_faces.reserve(records.size());
   edge_list.reserve(records.size());
   for (const Edge_record& r : records) {
     if (r.f0 == npos || r.f1 == npos) m.on_border[r.a] = m.on_border[r.b] = 1;
-    const std::size_t ei = m.edges.size();
-    m.edges.push_back({Index(r.a), Index(r.b)});
-    m.edge_faces.push_back({Index(r.f0), Index(r.f1)});
+    m.edges.push_back({r.a, r.b});
+    m.edge_faces.push_back({r.f0, r.f1});
     edge_list.push_back(graph_edges[r.descriptor]);
-    vertex_edge_pairs.emplace_back(r.a, ei);
-    vertex_edge_pairs.emplace_back(r.b, ei);
   }
+  std::vector<Edge_record>().swap(records);
   // Edges around each vertex (bucketed in edge order), each vertex's few
   // sorted by their other end, then by edge where two edges join the same two
   // vertices: one-ring neighbours in increasing index order, at linear cost.
-  m.vertex_edges.assign(nv, vertex_edge_pairs);
+  m.vertex_edges.assign(nv, [&](auto emit) {
+    for (std::size_t e = 0; e < m.edges.size(); ++e) emit(m.edges[e][0], e), emit(m.edges[e][1], e);
+  });
   m.vertex_neighbors.begin = m.vertex_edges.begin;
   m.vertex_neighbors.items.resize(m.vertex_edges.items.size());
   for (std::size_t i = 0; i < nv; ++i) {

@@ -33,20 +33,21 @@ struct Ilsa_neighborhoods {
 inline Ilsa_neighborhoods make_ilsa_neighborhoods(const Flat_mesh& m, const Vertex_classification& c,
                                                   const std::vector<unsigned char>& movable) {
   Ilsa_neighborhoods nb;
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
     if (c.is_fixed(v) || !movable[v]) continue;
     nb.adjustable.push_back(v);
-    if (c.type[v] == ILSA_vertex_type::Ridge) {
-      pairs.emplace_back(v, c.attached_sharp[v][0]);
-      pairs.emplace_back(v, c.attached_sharp[v][1]);
-    } else {
-      nb.smooth.push_back(v);
-      for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w)
-        pairs.emplace_back(v, *w);
-    }
+    if (c.type[v] != ILSA_vertex_type::Ridge) nb.smooth.push_back(v);
   }
-  nb.neighbors.assign(m.number_of_vertices(), pairs);
+  nb.neighbors.assign(m.number_of_vertices(), [&](auto emit) {
+    for (std::size_t v : nb.adjustable) {
+      if (c.type[v] == ILSA_vertex_type::Ridge) {
+        emit(v, c.attached_sharp[v][0]);
+        emit(v, c.attached_sharp[v][1]);
+      } else {
+        for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w) emit(v, *w);
+      }
+    }
+  });
   return nb;
 }
 
