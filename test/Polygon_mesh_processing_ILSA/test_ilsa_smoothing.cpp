@@ -3,7 +3,7 @@
 // face, better mean quality; planar grids stay planar (also without the
 // length term, which switches the penalty solve to SVD); Surface_mesh and
 // Polyhedron_3 agree; the result does not depend on the vertex order (Jacobi);
-// the flat copy's renumbering for locality;
+// the flat copy's renumbering for locality; the penalty step's N(v);
 // named parameters chain in both orders; the range overload fixes the rest;
 // the default quality floor keeps the input's minimum aspect ratio; no move
 // that lowers its star's mean quality is kept; the convergence stop; the
@@ -181,6 +181,34 @@ void test_locality_order() {
   after /= double(faces.size());
   std::cout << "locality order: mean spread of a face's vertex numbers " << before << " -> " << after << "\n";
   assert(after < before / 10);
+}
+
+// The penalty plane's N(v) (paper §3), which the penalty step computes from the
+// star's faces when it needs it, is the classification's discrete normal made
+// from the normals of all faces, normalised.
+void test_penalty_vertex_normal() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  Surface_mesh tm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
+  perturb_on_surface(tm, 0.3, 12);
+  std::vector<Surface_mesh::Vertex_index> vertex_list;
+  ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, CGAL::parameters::default_values()))> vertex_index{
+      ilsa::vertex_index_map_of(tm, CGAL::parameters::default_values()), {}};
+  std::vector<Surface_mesh::Edge_index> edge_list;
+  const ilsa::Flat_mesh m =
+      ilsa::build_flat_mesh(tm, get(CGAL::vertex_point, tm), vertex_list, vertex_index,
+                            ilsa::face_index_map_of(tm, CGAL::parameters::default_values()), edge_list);
+  std::vector<ilsa::Vec3> normals;
+  ilsa::compute_face_normals(m, m.points, normals);
+  std::size_t nonzero = 0;
+  for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
+    const ilsa::Vec3 x = ilsa::discrete_normal(m, normals, v);
+    const ilsa::Vec3 expected = x.norm() > 0 ? ilsa::Vec3(x.normalized()) : x;
+    const ilsa::Vec3 n = ilsa::unit_vertex_normal(m, m.points, v);
+    assert(n == expected);
+    nonzero += n.norm() > 0.5;
+  }
+  std::cout << "penalty vertex normal: " << nonzero << " of " << m.number_of_vertices() << " unit normals\n";
+  assert(nonzero == m.number_of_vertices());
 }
 
 // Named parameters chain in both orders with CGAL's own, and take effect.
@@ -588,6 +616,7 @@ int main() {
   test_mesh_types_agree();
   test_vertex_order();
   test_locality_order();
+  test_penalty_vertex_normal();
   test_named_parameter_chaining<Surface_mesh>();
   test_named_parameter_chaining<Polyhedron>();
   test_vertex_range<Surface_mesh>();

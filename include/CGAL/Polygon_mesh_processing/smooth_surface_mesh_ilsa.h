@@ -345,7 +345,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
 
   // T_new := T_ori. `home` is the original face (ridge: sharp edge) each vertex lies on.
   // `target`: v + d, the position before projection (fixed vertices: their own).
-  std::vector<Vec3> pos = original.points, next, target = pos, d, face_normals;
+  std::vector<Vec3> pos = original.points, next, target = pos, d;
   std::vector<ilsa::Index> home(pos.size(), ilsa::npos), next_home;
   std::vector<std::size_t> moved;
   std::vector<unsigned char> guarded(pos.size(), 0), skipped(pos.size(), 0);
@@ -370,11 +370,10 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices
     // (Algo. 3; the face normals of T_new give the discrete normal N(v) of
     // paper §3 where the penalty plane needs it).
-    ilsa::compute_face_normals<ConcurrencyTag>(original, pos, face_normals);
     ilsa::compute_ilsa_displacement<ConcurrencyTag>(pos, neighborhoods, relax1, std::size_t(sweeps), tolerance, d,
                                                     ilsa_workspace);
-    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, face_normals, neighborhoods, penalty, d,
-                                                         penalty_workspace);
+    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, neighborhoods, penalty, d, penalty_workspace,
+                                                         ilsa_workspace.next);
 
     // p(v): projection of v + d(v) onto T_ori (user manual, "Projection guard"), then the safety check; a
     // move the check dropped in the previous iteration is first tried without projection (its pre-test).

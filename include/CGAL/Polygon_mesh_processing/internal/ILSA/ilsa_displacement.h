@@ -53,7 +53,7 @@ inline Ilsa_neighborhoods make_ilsa_neighborhoods(const Flat_mesh& m, const Vert
 
 /// Buffers reused across iterations, so the sweeps do not allocate.
 struct Ilsa_workspace {
-  std::vector<Vec3> next;      // Jacobi target buffer
+  std::vector<Vec3> next;      // Jacobi target buffer (shared with Algo. 3)
   std::vector<double> weights; // α_ij, aligned with Ilsa_neighborhoods::neighbors.items
 };
 

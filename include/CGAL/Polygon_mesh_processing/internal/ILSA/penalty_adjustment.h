@@ -37,7 +37,6 @@ struct Penalty_parameters {
 };
 
 struct Penalty_workspace {
-  std::vector<Vec3> next;   // Jacobi target buffer
   std::vector<double> beta; // β = 1 / s(v, v_j, v_j+1), per face of the current mesh
 };
 
@@ -55,9 +54,11 @@ template <class VertexNormal> std::pair<Vec3, double> penalty_plane(const Vec3& 
   return {vertex_normal(), 0.};
 }
 
-/// Unit discrete normal N(v) of the smooth vertex `v` (paper §3), or zero.
-inline Vec3 unit_vertex_normal(const Flat_mesh& m, const std::vector<Vec3>& face_normals, std::size_t v) {
-  const Vec3 n = discrete_normal(m, face_normals, v);
+/// Unit discrete normal N(v) of the smooth vertex `v` (paper §3) at the
+/// positions `pos`, or zero. The normals of its faces are computed here: few
+/// vertices, if any, need N(v) (see penalty_plane()).
+inline Vec3 unit_vertex_normal(const Flat_mesh& m, const std::vector<Vec3>& pos, std::size_t v) {
+  const Vec3 n = discrete_normal(m, v, [&](std::size_t f) { return unit_normal(pos, m.faces[f]); });
   return n.norm() > 0 ? Vec3(n.normalized()) : n;
 }
 
@@ -65,8 +66,7 @@ inline Vec3 unit_vertex_normal(const Flat_mesh& m, const std::vector<Vec3>& face
 /// Every term is quadratic in x, so ∇Q = 0 is the 3x3 system H x = r.
 /// `face_normals`: unit normals of the faces at `pos`.
 inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3>& pos, const std::vector<Vec3>& d,
-                                      const std::vector<double>& beta, const std::vector<Vec3>& face_normals,
-                                      std::size_t v, const Penalty_parameters& p) {
+                                      const std::vector<double>& beta, std::size_t v, const Penalty_parameters& p) {
   const Vec3& x0 = pos[v];
   auto pending = [&](std::size_t w) -> Vec3 { return pos[w] + d[w] - x0; };
 
@@ -89,7 +89,7 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
   }
 
   // Penalty term (1/μ) (a·x − k)².
-  const auto plane = penalty_plane(d[v], [&] { return unit_vertex_normal(m, face_normals, v); });
+  const auto plane = penalty_plane(d[v], [&] { return unit_vertex_normal(m, pos, v); });
   H += (2. / p.mu) * plane.first * plane.first.transpose();
   r += (2. / p.mu) * plane.second * plane.first;
 
@@ -104,11 +104,12 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 }
 
 /// Algo. 3 on the smooth vertices of `nb`; `d` holds Algo. 2's displacements on
-/// entry and the adjusted ones on exit. Returns the number of sweeps run.
+/// entry and the adjusted ones on exit; `buffer` is the sweeps' second buffer
+/// (the caller shares it with Algo. 2). Returns the number of sweeps run.
 template <class ConcurrencyTag>
 std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
-                                           const std::vector<Vec3>& face_normals, const Ilsa_neighborhoods& nb,
-                                           const Penalty_parameters& p, std::vector<Vec3>& d, Penalty_workspace& ws) {
+                                           const Ilsa_neighborhoods& nb, const Penalty_parameters& p,
+                                           std::vector<Vec3>& d, Penalty_workspace& ws, std::vector<Vec3>& buffer) {
   // β_j from the current faces; a floor at 1e-3 of the mean area keeps a
   // degenerate face from swamping the star.
   ws.beta.resize(m.number_of_faces());
@@ -121,8 +122,8 @@ std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector
   parallel_for<ConcurrencyTag>(m.number_of_faces(),
                                [&](std::size_t f) { ws.beta[f] = 1. / (std::max)(ws.beta[f], smallest_area); });
 
-  return run_jacobi_sweeps<ConcurrencyTag>(nb.smooth, p.sweeps, p.tolerance, d, ws.next, [&](std::size_t v) {
-    const Vec3 d_new = minimize_penalty_function(m, pos, d, ws.beta, face_normals, v, p);
+  return run_jacobi_sweeps<ConcurrencyTag>(nb.smooth, p.sweeps, p.tolerance, d, buffer, [&](std::size_t v) {
+    const Vec3 d_new = minimize_penalty_function(m, pos, d, ws.beta, v, p);
     return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
   });
 }

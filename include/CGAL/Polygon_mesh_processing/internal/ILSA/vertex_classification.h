@@ -26,17 +26,21 @@ namespace ILSA {
 /// Solved through the normal equations `AᵀA x = Aᵀ1` with the SVD; a relative
 /// threshold of 1e-12 on the singular values of `AᵀA` (1e-6 on those of `A`)
 /// makes a flat star rank 1, giving `x = n` and `|x| = 1`.
-/// `face_normals` holds the unit normal of every face (zero when degenerate).
-inline Vec3 discrete_normal(const Flat_mesh& m, const std::vector<Vec3>& face_normals, std::size_t v) {
+/// `face_normal(f)` gives the unit normal of face `f` (zero when degenerate).
+template <class FaceNormal> Vec3 discrete_normal(const Flat_mesh& m, std::size_t v, const FaceNormal& face_normal) {
   Eigen::Matrix3d AtA = Eigen::Matrix3d::Zero();
   Vec3 At1 = Vec3::Zero();
   for (const Index* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) {
-    const Vec3& n = face_normals[*f];
+    const Vec3 n = face_normal(std::size_t(*f));
     AtA += n * n.transpose();
     At1 += n;
   }
   if (At1.isZero(0)) return Vec3::Zero();
   return solve_by_svd(AtA, At1, 1e-12);
+}
+/// The same with the unit normals of all faces in `face_normals`.
+inline Vec3 discrete_normal(const Flat_mesh& m, const std::vector<Vec3>& face_normals, std::size_t v) {
+  return discrete_normal(m, v, [&](std::size_t f) -> const Vec3& { return face_normals[f]; });
 }
 
 /// Unit normals of all faces for the positions `pos`.
