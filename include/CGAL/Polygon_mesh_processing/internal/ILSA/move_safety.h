@@ -365,9 +365,10 @@ private:
   // the feature lines of the input (its sharp edges, and the edges whose
   // dihedral angle is below the feature angle), both ways. For each feature
   // edge of `v`, the input positions of its two ends may not end farther than
-  // the tolerance from the smoothed line around them (a bend cut off), and its
-  // inner points may not end farther from the input line (a chord across a
-  // bend), unless they already were.
+  // the tolerance from the smoothed line around them (a bend cut off), nor its
+  // inner input points, and the inner points of the smoothed edge may not end
+  // farther from the input line (a chord across a bend), unless they already
+  // were. The points are those mesh_fidelity_ilsa() samples, k / 8 of the way.
   bool crease_deviates(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home,
                        const std::vector<Vec3>& next, const std::vector<Index>& next_home, std::size_t v) const {
     const Index* u = m_.vertex_neighbors.first(v);
@@ -379,13 +380,38 @@ private:
         const double now = line_vertex_deviation(next, w, line);
         if (now > fidelity_tolerance_ && now > line_vertex_deviation(previous, w, line)) return true;
       }
-      for (double t : {0., 0.25, 0.5, 0.75}) { // t = 1 is `u`, checked with its own move
+      // The points at which mesh_fidelity_ilsa() samples the edge, k / 8 of the way, both ways.
+      for (int k = 0; k < crease_samples; ++k) { // k = crease_samples is `u`, checked with its own move
+        const double t = double(k) / crease_samples;
         const double now = line_edge_deviation(next, next_home, v, *u, t, line);
         if (now > fidelity_tolerance_ && now > line_edge_deviation(previous, previous_home, v, *u, t, line))
           return true;
+        if (k == 0) continue; // the input position of `v`, measured above
+        const double input_now = line_input_deviation(next, v, *u, t, line);
+        if (input_now > fidelity_tolerance_ && input_now > line_input_deviation(previous, v, *u, t, line)) return true;
       }
     }
     return false;
+  }
+
+  // Samples per feature edge of the crease bound, as in mesh_fidelity_ilsa().
+  static constexpr int crease_samples = 8;
+
+  // Distance from the point at `t` along the input edge from `v` to `u` to the
+  // line `line` at `pos` around them: the line's edges at `v` and `u` and at
+  // their other ends.
+  double line_input_deviation(const std::vector<Vec3>& pos, std::size_t v, std::size_t u, double t,
+                              std::size_t line) const {
+    const Vec3 x = m_.points[v] + t * (m_.points[u] - m_.points[v]);
+    double best = std::numeric_limits<double>::infinity();
+    auto measure = [&](std::size_t e) {
+      best = (std::min)(best, squared_distance_to_segment(x, pos[m_.edges[e][0]], pos[m_.edges[e][1]]));
+    };
+    for (std::size_t w : {v, u})
+      for_each_line_edge(w, line, [&](std::size_t e) {
+        for (std::size_t end : m_.edges[e]) for_each_line_edge(end, line, measure);
+      });
+    return std::sqrt(best);
   }
 
   // A crease edge belongs to its crease polyline; another feature edge is a line of its own.
