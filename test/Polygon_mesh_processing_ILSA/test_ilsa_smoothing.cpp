@@ -30,6 +30,19 @@ void require(const Invariant_report& r, const char* what) {
   assert(r.mean_q_after > r.mean_q_before);
 }
 
+// The package's flat copy of `tm` with its default index maps (`vertex_list`,
+// `edge_list`: the descriptors in flat order).
+template <class Mesh>
+CGAL::Polygon_mesh_processing::internal::ILSA::Flat_mesh
+flat_copy(const Mesh& tm, std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& vertex_list,
+          std::vector<typename boost::graph_traits<Mesh>::edge_descriptor>& edge_list) {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  const auto np = CGAL::parameters::default_values();
+  ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, np))> vertex_index{ilsa::vertex_index_map_of(tm, np), {}};
+  return ilsa::build_flat_mesh(tm, get(CGAL::vertex_point, tm), vertex_list, vertex_index,
+                               ilsa::face_index_map_of(tm, np), edge_list);
+}
+
 template <class Mesh> void test_perturbed_cube() {
   const int n = 8;
   Soup soup = cube(n);
@@ -191,12 +204,8 @@ void test_penalty_vertex_normal() {
   Surface_mesh tm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
   perturb_on_surface(tm, 0.3, 12);
   std::vector<Surface_mesh::Vertex_index> vertex_list;
-  ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, CGAL::parameters::default_values()))> vertex_index{
-      ilsa::vertex_index_map_of(tm, CGAL::parameters::default_values()), {}};
   std::vector<Surface_mesh::Edge_index> edge_list;
-  const ilsa::Flat_mesh m =
-      ilsa::build_flat_mesh(tm, get(CGAL::vertex_point, tm), vertex_list, vertex_index,
-                            ilsa::face_index_map_of(tm, CGAL::parameters::default_values()), edge_list);
+  const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list);
   std::vector<ilsa::Vec3> normals;
   ilsa::compute_face_normals(m, m.points, normals);
   std::size_t nonzero = 0;
@@ -341,12 +350,8 @@ template <class Mesh> void test_local_projection() {
   std::normal_distribution<double> normal;
   for (const auto& [name, tm] : meshes) {
     std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list;
-    ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, CGAL::parameters::default_values()))> vertex_index{
-        ilsa::vertex_index_map_of(tm, CGAL::parameters::default_values()), {}};
     std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> edge_list;
-    const ilsa::Flat_mesh m =
-        ilsa::build_flat_mesh(tm, get(CGAL::vertex_point, tm), vertex_list, vertex_index,
-                              ilsa::face_index_map_of(tm, CGAL::parameters::default_values()), edge_list);
+    const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list);
     std::vector<unsigned char> constrained_vertices, constrained_edges;
     const auto options = ilsa::read_classification_parameters(tm, m, CGAL::parameters::default_values(), vertex_list,
                                                               edge_list, constrained_vertices, constrained_edges);

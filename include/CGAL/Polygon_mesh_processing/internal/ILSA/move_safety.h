@@ -26,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <vector>
 
@@ -398,36 +399,32 @@ private:
   static constexpr int crease_samples = 8;
 
   // Distance from the point at `t` along the input edge from `v` to `u` to the
-  // line `line` at `pos` around them: the line's edges at `v` and `u` and at
-  // their other ends.
+  // line `line` at `pos` around them.
   double line_input_deviation(const std::vector<Vec3>& pos, std::size_t v, std::size_t u, double t,
                               std::size_t line) const {
-    const Vec3 x = m_.points[v] + t * (m_.points[u] - m_.points[v]);
-    double best = std::numeric_limits<double>::infinity();
-    auto measure = [&](std::size_t e) {
-      best = (std::min)(best, squared_distance_to_segment(x, pos[m_.edges[e][0]], pos[m_.edges[e][1]]));
-    };
-    for (std::size_t w : {v, u})
-      for_each_line_edge(w, line, [&](std::size_t e) {
-        for (std::size_t end : m_.edges[e]) for_each_line_edge(end, line, measure);
-      });
-    return std::sqrt(best);
+    return distance_to_line(m_.points[v] + t * (m_.points[u] - m_.points[v]), pos, {v, u}, line);
   }
 
   // A crease edge belongs to its crease polyline; another feature edge is a line of its own.
   std::size_t line_of(std::size_t e) const { return c_.crease_of_edge[e] != npos ? c_.crease_of_edge[e] : e; }
 
-  // Distance from the input position of `w` to the line `line` at `pos`
-  // around it: the line's edges at `w` and at their other ends.
+  // Distance from the input position of `w` to the line `line` at `pos` around it.
   double line_vertex_deviation(const std::vector<Vec3>& pos, std::size_t w, std::size_t line) const {
-    const Vec3& x = m_.points[w];
+    return distance_to_line(m_.points[w], pos, {w}, line);
+  }
+
+  // Distance from `x` to the line `line` at `pos` around the vertices
+  // `around`: the line's edges at them and at the other ends of these edges.
+  double distance_to_line(const Vec3& x, const std::vector<Vec3>& pos, std::initializer_list<std::size_t> around,
+                          std::size_t line) const {
     double best = std::numeric_limits<double>::infinity();
     auto measure = [&](std::size_t e) {
       best = (std::min)(best, squared_distance_to_segment(x, pos[m_.edges[e][0]], pos[m_.edges[e][1]]));
     };
-    for_each_line_edge(w, line, [&](std::size_t e) {
-      for (std::size_t end : m_.edges[e]) for_each_line_edge(end, line, measure);
-    });
+    for (std::size_t w : around)
+      for_each_line_edge(w, line, [&](std::size_t e) {
+        for (std::size_t end : m_.edges[e]) for_each_line_edge(end, line, measure);
+      });
     return std::sqrt(best);
   }
 

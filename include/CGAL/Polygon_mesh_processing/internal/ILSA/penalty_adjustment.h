@@ -64,7 +64,6 @@ inline Vec3 unit_vertex_normal(const Flat_mesh& m, const std::vector<Vec3>& pos,
 
 /// Minimiser of Q(x; μ) for the smooth vertex `v`, relative to `pos[v]`.
 /// Every term is quadratic in x, so ∇Q = 0 is the 3x3 system H x = r.
-/// `face_normals`: unit normals of the faces at `pos`.
 inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3>& pos, const std::vector<Vec3>& d,
                                       const std::vector<double>& beta, std::size_t v, const Penalty_parameters& p) {
   const Vec3& x0 = pos[v];
