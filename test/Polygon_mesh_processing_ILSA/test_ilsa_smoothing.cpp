@@ -338,7 +338,10 @@ template <class Mesh> void test_thin_shell() {
 // shared by its faces: a tie the local answer must leave to the tree) and at
 // the vertex itself, on meshes with creases, slivers, mirror symmetry and two
 // sheets closer than an edge. A good share of the targets must get the local
-// answer (in a real run, most do), or the comparison would prove little.
+// answer (in a real run, most do), or the comparison would prove little; on
+// the thin shell, whose vertex clearances rule out little, most of them come
+// from the traversal within reach (project_near()), which must then find every
+// face of the other sheet that the tree's answer would come from.
 template <class Mesh> void test_local_projection() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
   std::size_t n = 0;
@@ -387,7 +390,7 @@ template <class Mesh> void test_local_projection() {
     }
     std::cout << "local projection, " << name << ": " << local << " of " << total
               << " answered locally, same as the tree (" << guarded << " guarded by the tree)" << std::endl;
-    assert(local > (name == std::string("thin shell") ? 0 : total / 5));
+    assert(local > total / 5);
   }
 }
 

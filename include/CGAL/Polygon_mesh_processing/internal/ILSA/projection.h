@@ -18,7 +18,8 @@
 //
 // Local answer (user manual, "Performance"): the guard makes the answer the
 // closest point of the faces near the home face in every case, so a smooth
-// vertex is first projected onto those faces alone. The AABB tree is asked
+// vertex is first projected onto those faces alone (skipping the faces whose
+// bounding ball is out of reach). The AABB tree is asked for the closest point
 // only when that could differ from its own answer: when two near faces (or the
 // current position) are within a rounding margin of the closest distance
 // (the tree breaks such ties by its traversal order), when a near face is too
@@ -26,7 +27,8 @@
 // another patch around the home face is as close, or when a face touching no
 // vertex of the home face might be (each vertex's clearance, its distance to
 // the nearest face not incident to it, computed once with the tree, rules that
-// out). The result is then the one of the tree query, bit for bit.
+// out, or else a traversal of the tree within the reach of the closest
+// distance). The result is then the one of the tree query, bit for bit.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
@@ -45,6 +47,7 @@
 #include <boost/iterator/counting_iterator.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -134,6 +137,7 @@ public:
     }
     if (!segments_.empty()) crease_tree_.rebuild(segments_.cbegin(), segments_.cend()), crease_tree_.build();
     compute_clearances<ConcurrencyTag>();
+    compute_balls();
   }
 
   /// Home of vertex `v` of the original mesh: an incident face, or for a ridge
@@ -250,6 +254,34 @@ private:
     return bound * bound;
   }
 
+  static double squared_distance_to_box(const Vec3& x, const CGAL::Bbox_3& b) {
+    double d = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double gap = (std::max)({b.min(i) - x[i], x[i] - b.max(i), 0.});
+      d += gap * gap;
+    }
+    return d;
+  }
+
+  // Traversal of the face tree for a face that touches no vertex of `home`
+  // and may lie within `reach` (squared) of `x`: it stops at the first one.
+  struct Reach_traits {
+    const Projector* self;
+    const Vec3& x;
+    std::size_t home;
+    double reach; // squared
+    bool found = false;
+    bool go_further() const { return !found; }
+    void intersection(const Point&, const Face_primitive& primitive) {
+      for (Index w : self->m_.faces[home])
+        if (self->incident(primitive.id(), w)) return;
+      found = self->squared_distance_at_least(x, primitive.id()) <= reach;
+    }
+    template <class Node> bool do_intersect(const Point&, const Node& node) const {
+      return squared_distance_to_box(x, node.bbox()) <= reach;
+    }
+  };
+
   // Traversal of the face tree for the smallest squared distance from vertex
   // `w` to the faces not incident to it, nearest boxes first.
   struct Clearance_traits {
@@ -262,15 +294,7 @@ private:
       if (!self->incident(primitive.id(), w))
         best = (std::min)(best, self->squared_distance_at_least(self->m_.points[w], primitive.id()));
     }
-    double box_distance(const CGAL::Bbox_3& b) const {
-      const Vec3& x = self->m_.points[w];
-      double d = 0;
-      for (int i = 0; i < 3; ++i) {
-        const double gap = (std::max)({b.min(i) - x[i], x[i] - b.max(i), 0.});
-        d += gap * gap;
-      }
-      return d;
-    }
+    double box_distance(const CGAL::Bbox_3& b) const { return squared_distance_to_box(self->m_.points[w], b); }
     template <class Node> bool do_intersect(const Point&, const Node& node) const {
       return box_distance(node.bbox()) < best;
     }
@@ -314,42 +338,92 @@ public:
     double best = std::numeric_limits<double>::infinity(), second = best, other = best;
     std::size_t best_face = npos;
     bool thin = false;
-    for_each_face_around(home, [&](std::size_t g, bool near) {
+    // A face whose bounding ball is farther from `q` than the reach of the
+    // best distance so far cannot change `best`, nor fail the tests below: its
+    // distance is not computed. The home face comes first, so that the reach
+    // is short from the start; the minima do not depend on the order.
+    double within = std::numeric_limits<double>::infinity();
+    auto measure = [&](std::size_t g, bool near) {
       const auto& t = m_.faces[g];
-      thin = thin || thin_[g];
       const double d = squared_distance_to_triangle(q, m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]);
       if (!near)
         other = (std::min)(other, d);
       else if (d < best)
-        second = best, best = d, best_face = g;
+        second = best, best = d, best_face = g, within = std::sqrt(best) + margin + ball_slack;
       else if (d < second)
         second = d;
+    };
+    measure(home, true);
+    for_each_face_around(home, [&](std::size_t g, bool near) {
+      thin = thin || thin_[g];
+      if (g != home && ball_within(q, g, within)) measure(g, near);
     });
     if (thin || best_face == npos) return false;
     // No other near face, no face of another patch, not the current position
-    // within the margin; and no face that touches no vertex of `home`.
+    // within the margin; and no face that touches no vertex of `home`: the
+    // clearances of the vertices of `home` rule it out, or else a traversal
+    // of the tree that looks no farther than the reach.
     const double reach = std::sqrt(best) + margin;
     if (!(std::sqrt(second) > reach && std::sqrt(other) > reach && (q - current).norm() > reach)) return false;
     double clear = -1.;
     for (Index w : m_.faces[home]) clear = (std::max)(clear, clearance_[w] - (q - m_.points[w]).norm());
-    if (!(clear > reach)) return false;
+    if (!(clear > reach)) {
+      Reach_traits traits{this, q, home, reach * reach};
+      face_tree_.traversal(point(q), traits);
+      if (traits.found) return false;
+    }
     K::Construct_projected_point_3 closest;
     out = {vec(closest(Face_triangle_map{&m_}[Index(best_face)], point(q))), best_face, false};
     return true;
   }
 
 private:
+  // Whether the bounding ball of face `g` comes within `reach` of `x`
+  // (true for an infinite reach).
+  bool ball_within(const Vec3& x, std::size_t g, double reach) const {
+    const Ball& b = balls_[g];
+    const double gap = reach + double(b.radius);
+    const Vec3 c(double(b.center[0]), double(b.center[1]), double(b.center[2]));
+    return !((x - c).squaredNorm() > gap * gap);
+  }
+
+  // Bounding balls of the faces, in floats: the centre rounded, the radius
+  // measured from the rounded centre and rounded up, so that the ball holds
+  // the face.
+  struct Ball {
+    std::array<float, 3> center;
+    float radius;
+  };
+  void compute_balls() {
+    balls_.resize(m_.number_of_faces());
+    for (std::size_t f = 0; f < balls_.size(); ++f) {
+      const auto& t = m_.faces[f];
+      const Vec3 centroid = (m_.points[t[0]] + m_.points[t[1]] + m_.points[t[2]]) / 3.;
+      Ball& b = balls_[f];
+      for (int i = 0; i < 3; ++i) b.center[i] = float(centroid[i]);
+      const Vec3 c(double(b.center[0]), double(b.center[1]), double(b.center[2]));
+      double radius = 0;
+      for (Index w : t) radius = (std::max)(radius, (m_.points[w] - c).norm());
+      b.radius = float(radius);
+      if (double(b.radius) < radius) b.radius = std::nextafter(b.radius, std::numeric_limits<float>::infinity());
+    }
+  }
+
   // Rounding margin of the local answer, in normalised units (the bounding-box
   // diagonal is 1): far above the rounding of the distances (about 1e-16),
   // far below any distance the smoothing depends on.
   static constexpr double margin = 1e-10;
   // A face is thin when twice its area is below this fraction of its longest edge squared.
   static constexpr double thin_ratio = 1e-2;
+  // Allowance for the rounding of the bounding-ball test (normalised units),
+  // far above its errors (about 1e-16) and far below the margin.
+  static constexpr double ball_slack = 1e-13;
 
   const Flat_mesh& m_;
   const Vertex_classification& c_;
   std::vector<double> clearance_;   // per vertex, see compute_clearances()
   std::vector<unsigned char> thin_; // per face
+  std::vector<Ball> balls_;         // per face, see compute_balls()
   std::vector<Segment> segments_;
   std::vector<Index> segment_edge_;    // segment -> edge
   std::vector<Index> edge_to_segment_; // edge -> segment, npos if not sharp
