@@ -51,31 +51,45 @@ struct Triangle_shape {
   double smallest_angle_degrees;
 };
 
-template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2, bool with_angle = false) {
-  const std::array<std::array<double, 3>, 3> v{
-      {{CGAL::to_double(p0.x()), CGAL::to_double(p0.y()), CGAL::to_double(p0.z())},
-       {CGAL::to_double(p1.x()), CGAL::to_double(p1.y()), CGAL::to_double(p1.z())},
-       {CGAL::to_double(p2.x()), CGAL::to_double(p2.y()), CGAL::to_double(p2.z())}}};
-  auto sub = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-  };
-  auto cross = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  };
-  auto dot = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  };
+template <class P> std::array<std::array<double, 3>, 3> triangle_coordinates(const P& p0, const P& p1, const P& p2) {
+  return {{{CGAL::to_double(p0.x()), CGAL::to_double(p0.y()), CGAL::to_double(p0.z())},
+           {CGAL::to_double(p1.x()), CGAL::to_double(p1.y()), CGAL::to_double(p1.z())},
+           {CGAL::to_double(p2.x()), CGAL::to_double(p2.y()), CGAL::to_double(p2.z())}}};
+}
+inline std::array<double, 3> difference(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+inline std::array<double, 3> cross_product(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double dot_product(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Edge lengths and twice the area. Small enough to be inlined where the
+// safety check computes the aspect ratios of a star, its hottest loop.
+template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2) {
+  const auto v = triangle_coordinates(p0, p1, p2);
   Triangle_shape s;
-  const auto n = cross(sub(v[1], v[0]), sub(v[2], v[0]));
-  s.double_area = std::sqrt(dot(n, n));
+  const auto n = cross_product(difference(v[1], v[0]), difference(v[2], v[0]));
+  s.double_area = std::sqrt(dot_product(n, n));
   s.smallest_angle_degrees = 180.;
   for (int i = 0; i < 3; ++i) {
-    const auto a = sub(v[(i + 1) % 3], v[i]), b = sub(v[(i + 2) % 3], v[i]);
-    const auto c = sub(v[(i + 2) % 3], v[(i + 1) % 3]);
-    s.length[i] = std::sqrt(dot(c, c));
-    if (!with_angle) continue;
-    const auto axb = cross(a, b);
-    const double angle = std::atan2(std::sqrt(dot(axb, axb)), dot(a, b)) * 180. / 3.14159265358979323846;
+    const auto c = difference(v[(i + 2) % 3], v[(i + 1) % 3]);
+    s.length[i] = std::sqrt(dot_product(c, c));
+  }
+  return s;
+}
+
+// The same and the smallest angle (three atan2).
+template <class P> Triangle_shape triangle_shape_with_angle(const P& p0, const P& p1, const P& p2) {
+  Triangle_shape s = triangle_shape(p0, p1, p2);
+  const auto v = triangle_coordinates(p0, p1, p2);
+  for (int i = 0; i < 3; ++i) {
+    const auto a = difference(v[(i + 1) % 3], v[i]), b = difference(v[(i + 2) % 3], v[i]);
+    const auto axb = cross_product(a, b);
+    const double angle =
+        std::atan2(std::sqrt(dot_product(axb, axb)), dot_product(a, b)) * 180. / 3.14159265358979323846;
     s.smallest_angle_degrees = (std::min)(s.smallest_angle_degrees, angle);
   }
   return s;
@@ -118,7 +132,7 @@ template <class P> double triangle_mean_ratio(const P& p0, const P& p1, const P&
 /// \ingroup PkgPMPILSARef
 /// Smallest angle of a triangle, in degrees (0 for a degenerate one).
 template <class P> double triangle_minimum_angle(const P& p0, const P& p1, const P& p2) {
-  const auto s = internal::ILSA::triangle_shape(p0, p1, p2, true);
+  const auto s = internal::ILSA::triangle_shape_with_angle(p0, p1, p2);
   return s.double_area > 0 ? s.smallest_angle_degrees : 0.;
 }
 
