@@ -66,10 +66,8 @@ inline double dot_product(const std::array<double, 3>& a, const std::array<doubl
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// Edge lengths and twice the area. Small enough to be inlined where the
-// safety check computes the aspect ratios of a star, its hottest loop.
-template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2) {
-  const auto v = triangle_coordinates(p0, p1, p2);
+// Edge lengths and twice the area of the triangle with coordinates `v`.
+inline Triangle_shape triangle_shape_of(const std::array<std::array<double, 3>, 3>& v) {
   Triangle_shape s;
   const auto n = cross_product(difference(v[1], v[0]), difference(v[2], v[0]));
   s.double_area = std::sqrt(dot_product(n, n));
@@ -81,10 +79,16 @@ template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const
   return s;
 }
 
+// The same for three points. Small enough to be inlined where the safety
+// check computes the aspect ratios of a star, its hottest loop.
+template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2) {
+  return triangle_shape_of(triangle_coordinates(p0, p1, p2));
+}
+
 // The same and the smallest angle (three atan2).
 template <class P> Triangle_shape triangle_shape_with_angle(const P& p0, const P& p1, const P& p2) {
-  Triangle_shape s = triangle_shape(p0, p1, p2);
   const auto v = triangle_coordinates(p0, p1, p2);
+  Triangle_shape s = triangle_shape_of(v);
   for (int i = 0; i < 3; ++i) {
     const auto a = difference(v[(i + 1) % 3], v[i]), b = difference(v[(i + 2) % 3], v[i]);
     const auto axb = cross_product(a, b);

@@ -275,7 +275,7 @@ private:
     void intersection(const Point&, const Face_primitive& primitive) {
       for (Index w : self->m_.faces[home])
         if (self->incident(primitive.id(), w)) return;
-      found = self->squared_distance_at_least(x, primitive.id()) <= reach;
+      if (self->squared_distance_at_least(x, primitive.id()) <= reach) found = true;
     }
     template <class Node> bool do_intersect(const Point&, const Node& node) const {
       return squared_distance_to_box(x, node.bbox()) <= reach;
