@@ -60,6 +60,7 @@ struct Options {
   unsigned int iterations = 20, relaxation_steps = 3;
   double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 20., fidelity_tolerance = 3e-4;
   double minimum_gain = 1e-4;
+  double minimum_remaining_gain = 2e-3;
   std::optional<double> kink_angle;    // the library's default (the feature angle) when not given
   std::optional<double> quality_floor; // the library's default when not given
   bool fix_unattached = true, project = true, safety = true, monotone = false, reject_worsening = true, verbose = false;
@@ -83,7 +84,10 @@ const char* usage =
     "  --version               the package's version\n"
     "  --iterations N          largest number of global iterations (default 20)\n"
     "  --min-gain X            stop once an iteration raises the mean q by less, >= 0,\n"
-    "                          0 runs every iteration (default 1e-4)\n"
+    "                          0 disables this stop (default 1e-4)\n"
+    "  --min-remaining-gain X  stop once an iteration's gain of mean q times the iterations\n"
+    "                          left is below X, >= 0, 0 disables this stop (default 2e-3);\n"
+    "                          with both stops disabled every iteration runs\n"
     "  --relaxation-steps N    sweeps per iteration (default 3)\n"
     "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
     "  --relax2 X              penalty relaxation, (0,1] (default 0.5)\n"
@@ -151,6 +155,8 @@ Options parse(int argc, char** argv) {
       {"--wa", [&](const std::string& s) { o.wa = parse_number("--wa", s); }},
       {"--feature-angle", [&](const std::string& s) { o.feature_angle = parse_number("--feature-angle", s); }},
       {"--min-gain", [&](const std::string& s) { o.minimum_gain = parse_number("--min-gain", s); }},
+      {"--min-remaining-gain",
+       [&](const std::string& s) { o.minimum_remaining_gain = parse_number("--min-remaining-gain", s); }},
       {"--kink-angle", [&](const std::string& s) { o.kink_angle = parse_number("--kink-angle", s); }},
       {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
       {"--fidelity-tolerance",
@@ -230,6 +236,7 @@ std::string in_flag_terms(std::string message) {
       {"ilsa_feature_angle", "--feature-angle"},
       {"ilsa_crease_kink_angle", "--kink-angle"},
       {"ilsa_minimum_quality_gain", "--min-gain"},
+      {"ilsa_minimum_remaining_gain", "--min-remaining-gain"},
       {"ilsa_quality_floor", "--quality-floor"},
       {"ilsa_fidelity_tolerance", "--fidelity-tolerance"},
       {"number_of_relaxation_steps", "--relaxation-steps"},
@@ -307,6 +314,7 @@ auto smoothing_parameters(const Options& o, const std::function<bool(double)>& c
       .ilsa_fix_unattached_candidates(o.fix_unattached)
       .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
       .ilsa_minimum_quality_gain(o.minimum_gain)
+      .ilsa_minimum_remaining_gain(o.minimum_remaining_gain)
       .do_project(o.project)
       .use_safety_constraints(o.safety)
       .ilsa_quality_monotone(o.monotone)

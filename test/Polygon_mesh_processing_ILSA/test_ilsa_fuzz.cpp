@@ -21,8 +21,8 @@
 //   every input vertex within the fidelity tolerance of the result and the
 //   face points the package measures within it of the input, and no star with
 //   a lower mean aspect ratio; a run stopped by `ilsa_minimum_quality_gain`
-//   gained less than it in its last iteration and at least it in the one
-//   before (runs with one and two iterations fewer).
+//   or `ilsa_minimum_remaining_gain` failed one of them in its last iteration
+//   and passed both in the one before (runs with one and two iterations fewer).
 // A quarter of the cases leave the flip check as the only guard (quality floor
 // 0, worsening moves accepted, no fidelity bound).
 // Also always: the connectivity is unchanged; in a fifth of the cases a
@@ -184,6 +184,7 @@ int main() {
                        : tolerance_draw < 0.6 ? 1e-7
                                               : std::pow(10., -5 + 3 * unit(rng));
     const double gain = draw(0.5) ? 1e-4 : 0.;
+    const double remaining_gain = draw(0.5) ? 2e-3 : 0.;
     const bool project = !draw(0.1), safety = !draw(0.1);
     const bool use_range = draw(0.3), use_vertex_map = draw(0.2), use_edge_map = draw(0.25);
     const double edge_angle = 10 + 50 * unit(rng);
@@ -237,6 +238,7 @@ int main() {
                   .ilsa_crease_kink_angle(kink)
                   .ilsa_fidelity_tolerance(tolerance)
                   .ilsa_minimum_quality_gain(gain)
+                  .ilsa_minimum_remaining_gain(remaining_gain)
                   .do_project(project)
                   .use_safety_constraints(safety)
                   .relax_constraints(relax)
@@ -492,13 +494,14 @@ int main() {
                   << ", face points to the input " << face_worst / diagonal << " (tolerance " << tolerance << ")"
                   << std::endl;
     }
-    // The convergence stop: a run that ended before its cap and its callback's
-    // stop gained less than the minimum in its last iteration, and at least the
-    // minimum in the one before (mean aspect ratios of the same smoothing run
-    // for one and two iterations fewer, the gain ignored; the rounding of each
-    // face's aspect ratio bounds that of the mean).
+    // The convergence stops: a run that ended before its cap and its callback's
+    // stop gained less than the minimum in its last iteration or, times the
+    // iterations left, less than the remaining minimum, and passed both in the
+    // one before (mean aspect ratios of the same smoothing run for one and two
+    // iterations fewer, the stops disabled; the rounding of each face's aspect
+    // ratio bounds that of the mean).
     bool convergence_ok = true;
-    if (gain > 0 && statistics.number_of_iterations < allowed) {
+    if ((gain > 0 || remaining_gain > 0) && statistics.number_of_iterations < allowed) {
       ++convergence_checked;
       const std::size_t k = statistics.number_of_iterations;
       double shortest = std::numeric_limits<double>::infinity();
@@ -509,6 +512,7 @@ int main() {
           return run(x, CGAL::Sequential_tag(),
                      p.number_of_iterations(unsigned(j))
                          .ilsa_minimum_quality_gain(0.)
+                         .ilsa_minimum_remaining_gain(0.)
                          .callback(std::function<bool(double)>()));
         });
         convergence_ok = convergence_ok && stats.number_of_iterations == j;
@@ -516,8 +520,15 @@ int main() {
         return PMP::mesh_quality_ilsa(x).mean_aspect_ratio;
       };
       const double last = mean_after(k - 1);
-      convergence_ok = convergence_ok && after.mean_aspect_ratio - last < gain + 2 * quality_rounding(shortest);
-      if (k >= 2) convergence_ok = convergence_ok && last - mean_after(k - 2) >= gain - 2 * quality_rounding(shortest);
+      auto left = [&](std::size_t j) { return double(iterations) - double(j); };
+      const double gained = after.mean_aspect_ratio - last;
+      convergence_ok = convergence_ok && (gained < gain + 2 * quality_rounding(shortest) ||
+                                          (gained - 2 * quality_rounding(shortest)) * left(k) < remaining_gain);
+      if (k >= 2) {
+        const double gained_before = last - mean_after(k - 2);
+        convergence_ok = convergence_ok && gained_before >= gain - 2 * quality_rounding(shortest) &&
+                         (gained_before + 2 * quality_rounding(shortest)) * left(k - 1) >= remaining_gain;
+      }
     }
     ok = ok && worsening_ok && isolated_ok && convergence_ok;
     if (!ok) {
@@ -526,7 +537,7 @@ int main() {
                 << ", relax1 " << relax1 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa
                 << ", angle " << angle << ", fix " << fix << ", floor " << (default_floor ? -1. : floor)
                 << ", monotone " << monotone << ", reject worsening " << reject_worsening << ", kink " << kink
-                << ", tolerance " << tolerance << ", gain " << gain << ", project " << project << ", safety " << safety
+                << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain " << remaining_gain << ", project " << project << ", safety " << safety
                 << ", range " << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map
                 << ", relax " << relax << "): flipped " << f.number_of_flipped_faces << ", distance "
                 << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite

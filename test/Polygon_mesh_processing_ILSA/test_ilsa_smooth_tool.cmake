@@ -60,7 +60,7 @@ expect_failure(color_no_output "--color-by-type writes colours to a PLY file" "$
 foreach(case "mu;--mu=-1" "relax1;--relax1=0" "relax2;--relax2;2" "wl;--wl=-1" "wa;--wa;-1"
              "feature-angle;--feature-angle=190" "kink-angle;--kink-angle=-3" "quality-floor;--quality-floor=1"
              "fidelity-tolerance;--fidelity-tolerance=0" "min-gain;--min-gain=-1" "iterations;--iterations=200000"
-             "relaxation-steps;--relaxation-steps=0")
+             "relaxation-steps;--relaxation-steps=0" "min-remaining-gain;--min-remaining-gain=-1")
   list(GET case 0 flag)
   list(REMOVE_AT case 0)
   expect_failure(range_${flag} "ILSA: --${flag} must be" "${DATA}/sphere_low.off" "${WORK}/range_${flag}-out.off"
@@ -116,7 +116,7 @@ foreach(report full auto)
 endforeach()
 # --progress: one line per iteration on stderr; --no-progress: nothing there.
 expect_success("--progress" err "^\rILSA iteration 1 of at most 2\rILSA iteration 2 of at most 2\n$"
-               "${DATA}/sphere_low.off" --iterations 2 --min-gain 0 --progress)
+               "${DATA}/sphere_low.off" --iterations 2 --min-gain 0 --min-remaining-gain 0 --progress)
 expect_success("--no-progress" err "^$" "${DATA}/sphere_low.off" --iterations 2 --no-progress)
 # --help lists the formats, then --version; --version prints the project's version.
 expect_success("--help" out "\\.off \\.obj \\.ply \\.stl.*--version" --help)

@@ -229,16 +229,22 @@ template <class Mesh> void test_named_parameter_chaining() {
     const auto s = PMP::smooth_surface_mesh_ilsa(m, np);
     return std::make_pair(points_of(m), s.number_of_iterations);
   };
-  const auto a = run(CGAL::parameters::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_relaxation(0.3));
-  const auto b = run(CGAL::parameters::ilsa_relaxation(0.3).ilsa_penalty_mu(5.).number_of_iterations(4));
-  const auto default_mu = run(CGAL::parameters::number_of_iterations(4).ilsa_relaxation(0.3));
-  const auto default_relax = run(CGAL::parameters::ilsa_penalty_mu(5.).number_of_iterations(4));
-  assert(a.second == 4 && b.second == 4);
+  const auto a = run(
+      CGAL::parameters::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_minimum_remaining_gain(0.).ilsa_relaxation(0.3));
+  const auto b = run(
+      CGAL::parameters::ilsa_minimum_remaining_gain(0.).ilsa_relaxation(0.3).ilsa_penalty_mu(5.).number_of_iterations(4));
+  const auto default_mu =
+      run(CGAL::parameters::number_of_iterations(4).ilsa_relaxation(0.3).ilsa_minimum_remaining_gain(0.));
+  const auto default_relax =
+      run(CGAL::parameters::ilsa_penalty_mu(5.).number_of_iterations(4).ilsa_minimum_remaining_gain(0.));
+  const auto default_stop = run(CGAL::parameters::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_relaxation(0.3));
+  assert(a.second == 4 && b.second == 4 && default_stop.second < 4);
   assert(max_difference(a.first, b.first) == 0);
   assert(max_difference(a.first, default_mu.first) > 1e-6);
   assert(max_difference(a.first, default_relax.first) > 1e-6);
   // Every ILSA tag changes the result.
   const auto c = run(CGAL::parameters::number_of_iterations(4)
+                         .ilsa_minimum_remaining_gain(0.)
                          .ilsa_penalty_mu(5.)
                          .ilsa_relaxation(0.3)
                          .ilsa_penalty_relaxation(0.9)
@@ -527,42 +533,52 @@ template <class Mesh> void test_worsening_pretest() {
   assert(unchecked.number_of_rejected_moves == 0 && unchecked.number_of_moves_dropped_before_projection == 0);
 }
 
-// The stop (user manual, "Stopping early"): the run ends after the first
-// iteration that raises the mean aspect ratio by less than
-// ilsa_minimum_quality_gain; the iterations before it each gained more. The
-// first k iterations do not depend on the cap, so capped runs without the stop
-// give the mean after each iteration.
-template <class Mesh> void test_convergence_stop() {
-  Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
+// The stops (user manual, "Stopping early"): the run ends after the first
+// iteration whose gain of mean aspect ratio is below ilsa_minimum_quality_gain
+// or, times the iterations left, below ilsa_minimum_remaining_gain; the
+// iterations before it passed both. The first k iterations do not depend on
+// the cap, so capped runs without the stops give the mean after each
+// iteration. `remaining_decides`: the mesh is one where the second stop ends
+// the run while the gain is still above the first's threshold.
+template <class Mesh>
+void test_convergence_stop(const std::string& file, double remaining_gain, bool remaining_decides) {
+  const double minimum_gain = 1e-4, cap = 20;
+  Mesh original = read_mesh<Mesh>(data_file(file));
   Mesh m = original;
-  const auto s = PMP::smooth_surface_mesh_ilsa(m);
+  const auto s = PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_minimum_remaining_gain(remaining_gain));
   const std::size_t ran = s.number_of_iterations;
-  auto mean_after = [&](std::size_t k) {
+  auto capped = [&](std::size_t k) {
     Mesh x = original;
-    const auto r = PMP::smooth_surface_mesh_ilsa(
-        x, CGAL::parameters::number_of_iterations(unsigned(k)).ilsa_minimum_quality_gain(0.));
+    const auto r = PMP::smooth_surface_mesh_ilsa(x, CGAL::parameters::number_of_iterations(unsigned(k))
+                                                        .ilsa_minimum_quality_gain(0.)
+                                                        .ilsa_minimum_remaining_gain(0.));
     assert(r.number_of_iterations == k);
-    return PMP::mesh_quality_ilsa(x).mean_aspect_ratio;
+    return x;
   };
-  std::cout << "convergence stop: " << ran << " of 20 iterations" << std::endl;
-  assert(ran >= 2 && ran < 20);
-  assert(points_of(m) == points_of([&] {
-           Mesh x = original;
-           PMP::smooth_surface_mesh_ilsa(
-               x, CGAL::parameters::number_of_iterations(unsigned(ran)).ilsa_minimum_quality_gain(0.));
-           return x;
-         }()));
+  std::vector<double> mean; // after 0, 1, ... iterations
+  for (std::size_t k = 0; k <= std::size_t(cap); ++k) mean.push_back(PMP::mesh_quality_ilsa(capped(k)).mean_aspect_ratio);
+  std::cout << "convergence stop on " << file << " (remaining gain " << remaining_gain << "): " << ran << " of "
+            << cap << " iterations, mean q " << PMP::mesh_quality_ilsa(m).mean_aspect_ratio << " against "
+            << mean.back() << std::endl;
+  assert(ran >= 2 && ran < std::size_t(cap));
+  assert(points_of(m) == points_of(capped(ran)));
   // Up to the rounding of the mean in the input's coordinates.
-  assert(mean_after(ran) - mean_after(ran - 1) < 1e-4 + 1e-9);
-  for (std::size_t k = 1; k < ran; ++k) assert(mean_after(k) - mean_after(k - 1) >= 1e-4 - 1e-9);
-  assert(std::abs(mean_after(20) - PMP::mesh_quality_ilsa(m).mean_aspect_ratio) <= 0.002);
+  const double rounding = 1e-9;
+  auto gain = [&](std::size_t k) { return mean[k] - mean[k - 1]; };
+  auto left = [&](std::size_t k) { return cap - double(k); };
+  for (std::size_t k = 1; k < ran; ++k)
+    assert(gain(k) >= minimum_gain - rounding && (gain(k) + rounding) * left(k) >= remaining_gain);
+  assert(gain(ran) < minimum_gain + rounding || (gain(ran) - rounding) * left(ran) < remaining_gain);
+  if (remaining_decides) assert(gain(ran) > minimum_gain + rounding);
+  assert(std::abs(mean.back() - PMP::mesh_quality_ilsa(m).mean_aspect_ratio) <= 0.002);
 }
 
 // The callback sees the advancement after each iteration and does not change
 // the result; returning false stops the run where a shorter run would end.
 template <class Mesh> void test_callback() {
   const Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
-  const auto np = CGAL::parameters::number_of_iterations(5).ilsa_minimum_quality_gain(0.);
+  const auto np =
+      CGAL::parameters::number_of_iterations(5).ilsa_minimum_quality_gain(0.).ilsa_minimum_remaining_gain(0.);
   Mesh plain = original, watched = original, stopped = original, shorter = original;
   PMP::smooth_surface_mesh_ilsa(plain, np);
   std::vector<double> seen;
@@ -574,7 +590,9 @@ template <class Mesh> void test_callback() {
   std::size_t calls = 0;
   const std::function<bool(double)> stop_after_two = [&](double) { return ++calls < 2; };
   const auto t = PMP::smooth_surface_mesh_ilsa(stopped, np.callback(stop_after_two));
-  PMP::smooth_surface_mesh_ilsa(shorter, CGAL::parameters::number_of_iterations(2).ilsa_minimum_quality_gain(0.));
+  PMP::smooth_surface_mesh_ilsa(
+      shorter,
+      CGAL::parameters::number_of_iterations(2).ilsa_minimum_quality_gain(0.).ilsa_minimum_remaining_gain(0.));
   assert(calls == 2 && t.number_of_iterations == 2);
   assert(points_of(stopped) == points_of(shorter) && points_of(stopped) != points_of(plain));
   std::cout << "callback: " << seen.size() << " calls, stopped after " << t.number_of_iterations << std::endl;
@@ -601,8 +619,10 @@ int main() {
   test_callback<Polyhedron>();
   test_fidelity_without_hausdorff<Surface_mesh>();
   test_fidelity_without_hausdorff<Polyhedron>();
-  test_convergence_stop<Surface_mesh>();
-  test_convergence_stop<Polyhedron>();
+  test_convergence_stop<Surface_mesh>("sphere_low.off", 0., false);
+  test_convergence_stop<Polyhedron>("sphere_low.off", 0., false);
+  test_convergence_stop<Surface_mesh>("hemisphere.off", 2e-3, true);
+  test_convergence_stop<Polyhedron>("hemisphere.off", 2e-3, true);
   test_worsening_moves_rejected<Surface_mesh>();
   test_worsening_moves_rejected<Polyhedron>();
   test_worsening_pretest<Surface_mesh>();

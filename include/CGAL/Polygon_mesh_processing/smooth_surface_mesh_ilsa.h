@@ -89,16 +89,24 @@ namespace Polygon_mesh_processing {
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_iterations}
  *     \cgalParamDescription{the largest number of global iterations (the paper's max_global_iter_num); see
- * `ilsa_minimum_quality_gain` for the stop before it}
+ * `ilsa_minimum_quality_gain` and `ilsa_minimum_remaining_gain` for the stops before it}
  *     \cgalParamType{unsigned int, at most 100000}
  *     \cgalParamDefault{`20`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_minimum_quality_gain}
  *     \cgalParamDescription{the run stops before `number_of_iterations` once an iteration raises the mean aspect
- * ratio of the faces by less than this (convergence); `0` runs every iteration. The number of iterations run is
+ * ratio of the faces by less than this (convergence); `0` disables this stop. The number of iterations run is
  * `ILSA_statistics::number_of_iterations`}
  *     \cgalParamType{`double`, non-negative}
  *     \cgalParamDefault{`1e-4`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_minimum_remaining_gain}
+ *     \cgalParamDescription{the run also stops once the gain of mean aspect ratio of an iteration, times the number
+ * of iterations left before `number_of_iterations`, is below this: the gain the remaining iterations could still
+ * bring while the gains shrink from one iteration to the next (user manual, "Stopping early"); `0` disables this
+ * stop. With both stops disabled every iteration runs}
+ *     \cgalParamType{`double`, non-negative}
+ *     \cgalParamDefault{`2e-3`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_relaxation_steps}
  *     \cgalParamDescription{the number of sweeps of the ILSA and of the penalty step in each iteration
@@ -261,6 +269,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const bool reject_worsening = choose_parameter(get_parameter(np, internal_np::ilsa_reject_worsening_moves), true);
   const double fidelity_tolerance = choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), 3e-4);
   const double minimum_gain = choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), 1e-4);
+  const double minimum_remaining_gain =
+      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_remaining_gain), 2e-3);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   const std::function<bool(double)> callback =
       choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
@@ -273,7 +283,9 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   require(quality_floor >= 0 && quality_floor < 1, "ilsa_quality_floor must be in [0, 1)");
   require(fidelity_tolerance > 0, "ilsa_fidelity_tolerance must be positive (infinity disables the check)");
   require(minimum_gain >= 0 && std::isfinite(minimum_gain),
-          "ilsa_minimum_quality_gain must be non-negative and finite (0 runs every iteration)");
+          "ilsa_minimum_quality_gain must be non-negative and finite (0 disables this stop)");
+  require(minimum_remaining_gain >= 0 && std::isfinite(minimum_remaining_gain),
+          "ilsa_minimum_remaining_gain must be non-negative and finite (0 disables this stop)");
   require(double(iterations) >= 0 && double(iterations) <= 100000, "number_of_iterations must be in [0, 100000]");
   require(double(sweeps) >= 1 && double(sweeps) <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
   require(relax1 > 0 && relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
@@ -364,7 +376,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     for (double q : face_quality) sum += q;
     return sum / double((std::max)(face_quality.size(), std::size_t(1)));
   };
-  double mean_q = minimum_gain > 0 ? mean_quality() : 0.;
+  const bool may_stop = minimum_gain > 0 || minimum_remaining_gain > 0;
+  double mean_q = may_stop ? mean_quality() : 0.;
 
   for (std::size_t step = 0; step < std::size_t(iterations); ++step) {
     // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices
@@ -418,10 +431,13 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
                 << stats.number_of_shortened_moves << " shortened and " << stats.number_of_rejected_moves
                 << " rejected so far\n";
     if (callback && !callback(double(step + 1) / double(iterations))) break;
-    if (minimum_gain > 0) {
+    if (may_stop) {
+      // The gain of this iteration, and times the iterations left the gain
+      // still to come as the gains shrink from one iteration to the next.
       const double before = mean_q;
       mean_q = mean_quality();
-      if (mean_q - before < minimum_gain) break;
+      const double gain = mean_q - before, left = double(iterations) - double(step + 1);
+      if (gain < minimum_gain || gain * left < minimum_remaining_gain) break;
     }
   }
 
