@@ -3,7 +3,8 @@
 // face, better mean quality; planar grids stay planar (also without the
 // length term, which switches the penalty solve to SVD); Surface_mesh and
 // Polyhedron_3 agree; the result does not depend on the vertex order (Jacobi);
-// the flat copy's renumbering for locality; the penalty step's N(v);
+// the flat copy's renumbering for locality; the penalty step's N(v) and its
+// Cholesky solve;
 // named parameters chain in both orders; the range overload fixes the rest;
 // the default quality floor keeps the input's minimum aspect ratio; no move
 // that lowers its star's mean quality is kept; the convergence stop; the
@@ -14,6 +15,8 @@
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
+
+#include <Eigen/Cholesky>
 
 using namespace ilsa_test;
 
@@ -218,6 +221,49 @@ void test_penalty_vertex_normal() {
   }
   std::cout << "penalty vertex normal: " << nonzero << " of " << m.number_of_vertices() << " unit normals\n";
   assert(nonzero == m.number_of_vertices());
+}
+
+// The penalty step's 3x3 Cholesky solve gives Eigen::LLT's solution bit for
+// bit, on matrices shaped like the penalty systems (2 wl I plus rank-two area
+// terms of very different weights plus the plane term), and fails where LLT
+// reports a numerical issue (then the step takes the SVD). Only the lower
+// triangle is read, as by LLT.
+void test_penalty_cholesky() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  auto vec = [&] { return ilsa::Vec3(unit(rng), unit(rng), unit(rng)); };
+  std::size_t solved = 0, refused = 0;
+  for (int c = 0; c < 20000; ++c) {
+    Eigen::Matrix3d H = (c % 7 == 0 ? 0. : std::pow(10., 3 * unit(rng))) * Eigen::Matrix3d::Identity();
+    const int faces = 3 + c % 6;
+    for (int f = 0; f < faces; ++f) {
+      const ilsa::Vec3 e = vec() * std::pow(10., 2 * unit(rng));
+      H += std::pow(10., 4 * unit(rng)) * (e.squaredNorm() * Eigen::Matrix3d::Identity() - e * e.transpose());
+    }
+    const ilsa::Vec3 n = vec().normalized();
+    H += std::pow(10., 2 * unit(rng)) * n * n.transpose();
+    if (c % 11 == 0) H(1, 1) = -H(1, 1); // not positive definite
+    if (c % 13 == 0) H(2, 2) = 0.;
+    const ilsa::Vec3 r = vec() * std::pow(10., 3 * unit(rng));
+    Eigen::Matrix3d lower = H;
+    lower(0, 1) = lower(0, 2) = lower(1, 2) = std::nan(""); // never read
+    ilsa::Vec3 x;
+    const bool ok = ilsa::solve_by_cholesky(lower, r, x);
+    const Eigen::LLT<Eigen::Matrix3d> llt(H);
+    assert(ok == (llt.info() == Eigen::Success));
+    if (!ok) {
+      ++refused;
+      continue;
+    }
+    const ilsa::Vec3 expected = llt.solve(r);
+    for (int i = 0; i < 3; ++i)
+      assert(x(i) == expected(i) || (std::isnan(x(i)) && std::isnan(expected(i))));
+    ++solved;
+  }
+  std::cout << "penalty Cholesky: " << solved << " solved as by Eigen::LLT, " << refused << " refused as by it"
+            << std::endl;
+  assert(solved > 10000 && refused > 1000);
 }
 
 // Named parameters chain in both orders with CGAL's own, and take effect.
@@ -645,6 +691,7 @@ int main() {
   test_vertex_order();
   test_locality_order();
   test_penalty_vertex_normal();
+  test_penalty_cholesky();
   test_named_parameter_chaining<Surface_mesh>();
   test_named_parameter_chaining<Polyhedron>();
   test_vertex_range<Surface_mesh>();

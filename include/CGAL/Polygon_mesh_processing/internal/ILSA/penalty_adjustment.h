@@ -16,9 +16,8 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
-#include <Eigen/Cholesky>
-
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -62,8 +61,37 @@ inline Vec3 unit_vertex_normal(const Flat_mesh& m, const std::vector<Vec3>& pos,
   return n.norm() > 0 ? Vec3(n.normalized()) : n;
 }
 
+/// Solution of `H x = r` for the symmetric positive definite 3x3 `H` (its lower
+/// triangle is read) by Cholesky: the operations of `Eigen::LLT` and its
+/// `solve()`, in the same order, so the result is bit-identical, without the
+/// matrix norm LLT also computes and its loops over dynamic-size blocks (this
+/// solve runs for every smooth vertex in every sweep). Returns false, as LLT
+/// reports a numerical issue, when a pivot is not positive.
+inline bool solve_by_cholesky(const Eigen::Matrix3d& H, const Vec3& r, Vec3& x) {
+  double l00 = H(0, 0);
+  if (l00 <= 0) return false;
+  l00 = std::sqrt(l00);
+  const double l10 = H(1, 0) / l00, l20 = H(2, 0) / l00;
+  double l11 = H(1, 1) - l10 * l10;
+  if (l11 <= 0) return false;
+  l11 = std::sqrt(l11);
+  const double l21 = (H(2, 1) - l20 * l10) / l11;
+  double l22 = H(2, 2) - (l20 * l20 + l21 * l21);
+  if (l22 <= 0) return false;
+  l22 = std::sqrt(l22);
+  // L y = r, then Lᵀ x = y.
+  const double y0 = r(0) / l00;
+  const double y1 = (r(1) - l10 * y0) / l11;
+  const double y2 = (r(2) - (l20 * y0 + l21 * y1)) / l22;
+  x(2) = y2 / l22;
+  x(1) = (y1 - l21 * x(2)) / l11;
+  x(0) = (y0 - (l10 * x(1) + l20 * x(2))) / l00;
+  return true;
+}
+
 /// Minimiser of Q(x; μ) for the smooth vertex `v`, relative to `pos[v]`.
-/// Every term is quadratic in x, so ∇Q = 0 is the 3x3 system H x = r.
+/// Every term is quadratic in x, so ∇Q = 0 is the 3x3 system H x = r. H is
+/// symmetric: only its lower triangle is accumulated.
 inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3>& pos, const std::vector<Vec3>& d,
                                       const std::vector<double>& beta, std::size_t v, const Penalty_parameters& p) {
   const Vec3& x0 = pos[v];
@@ -83,22 +111,25 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
     const Vec3 a = pending(t[(k + 1) % 3]), b = pending(t[(k + 2) % 3]);
     const Vec3 e = b - a;
     const double w = 0.5 * p.area_weight * beta[*f];
-    H += w * (e.squaredNorm() * Eigen::Matrix3d::Identity() - e * e.transpose());
+    const double s = e.squaredNorm();
+    for (int j = 0; j < 3; ++j)
+      for (int i = j; i < 3; ++i) H(i, j) += w * ((i == j ? s : 0.) - e(i) * e(j));
     r += w * e.cross(a.cross(b));
   }
 
   // Penalty term (1/μ) (a·x − k)².
   const auto plane = penalty_plane(d[v], [&] { return unit_vertex_normal(m, pos, v); });
-  H += (2. / p.mu) * plane.first * plane.first.transpose();
+  const Vec3 scaled = (2. / p.mu) * plane.first;
+  for (int j = 0; j < 3; ++j)
+    for (int i = j; i < 3; ++i) H(i, j) += plane.first(j) * scaled(i);
   r += (2. / p.mu) * plane.second * plane.first;
 
   // Every term is positive semi-definite and the length term adds 2 wl I, so H
   // is positive definite with condition number at most trace(H) / (2 wl):
   // Cholesky is then as robust as the SVD and about ten times cheaper.
-  if (2. * p.length_weight >= 1e-8 * H.trace()) {
-    const Eigen::LLT<Eigen::Matrix3d> llt(H);
-    if (llt.info() == Eigen::Success) return llt.solve(r);
-  }
+  Vec3 x;
+  if (2. * p.length_weight >= 1e-8 * H.trace() && solve_by_cholesky(H, r, x)) return x;
+  H(0, 1) = H(1, 0), H(0, 2) = H(2, 0), H(1, 2) = H(2, 1);
   return solve_by_svd(H, r, 1e-12);
 }
 
