@@ -499,9 +499,10 @@ int main() {
     // iterations left, less than the remaining minimum, and passed both in the
     // one before (mean aspect ratios of the same smoothing run for one and two
     // iterations fewer, the stops disabled; the rounding of each face's aspect
-    // ratio bounds that of the mean).
+    // ratio bounds that of the mean). A run with no vertex to move runs no iteration.
     bool convergence_ok = true;
-    if ((gain > 0 || remaining_gain > 0) && statistics.number_of_iterations < allowed) {
+    if ((gain > 0 || remaining_gain > 0) && statistics.number_of_iterations >= 1 &&
+        statistics.number_of_iterations < allowed) {
       ++convergence_checked;
       const std::size_t k = statistics.number_of_iterations;
       double shortest = std::numeric_limits<double>::infinity();
