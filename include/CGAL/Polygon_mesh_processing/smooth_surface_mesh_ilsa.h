@@ -432,8 +432,9 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
                 << " rejected so far\n";
     if (callback && !callback(double(step + 1) / double(iterations))) break;
     if (may_stop) {
-      // The gain of this iteration, and times the iterations left the gain
-      // still to come as the gains shrink from one iteration to the next.
+      // Stop on a small gain of this iteration, or when this gain times the
+      // iterations left (what they could still add while the gains shrink
+      // from one iteration to the next) is small (user manual, "Stopping early").
       const double before = mean_q;
       mean_q = mean_quality();
       const double gain = mean_q - before, left = double(iterations) - double(step + 1);

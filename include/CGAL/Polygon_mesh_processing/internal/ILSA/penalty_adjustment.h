@@ -129,7 +129,7 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
   // Cholesky is then as robust as the SVD and about ten times cheaper.
   Vec3 x;
   if (2. * p.length_weight >= 1e-8 * H.trace() && solve_by_cholesky(H, r, x)) return x;
-  H(0, 1) = H(1, 0), H(0, 2) = H(2, 0), H(1, 2) = H(2, 1);
+  H(0, 1) = H(1, 0), H(0, 2) = H(2, 0), H(1, 2) = H(2, 1); // the SVD reads the whole matrix
   return solve_by_svd(H, r, 1e-12);
 }
 
