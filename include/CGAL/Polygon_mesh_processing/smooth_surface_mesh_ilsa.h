@@ -342,8 +342,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     quality_floor = (std::max)(quality_floor, input_minimum);
   }
   const ilsa::Projector projector(original, classification, ConcurrencyTag());
-  ilsa::Move_safety safety(original, classification, quality_monotone ? 1. : quality_floor, fidelity_tolerance,
-                           reject_worsening, 3);
+  ilsa::Move_safety safety(original, classification, projector, quality_monotone ? 1. : quality_floor,
+                           fidelity_tolerance, reject_worsening, 3);
   auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
     if (!do_project) return ilsa::Projector::Result{q, home, false};
     return projector.project(v, q, current, home);

@@ -50,10 +50,11 @@ public:
   /// that a move may create or increase; infinity disables the check.
   /// `reject_worsening`: drop a move that lowers the mean aspect ratio of the
   /// vertex's star, the neighbours being at their new positions.
-  Move_safety(const Flat_mesh& original, const Vertex_classification& classification, double quality_floor,
-              double fidelity_tolerance, bool reject_worsening, std::size_t halvings)
-      : m_(original), c_(classification), quality_floor_(quality_floor), fidelity_tolerance_(fidelity_tolerance),
-        reject_worsening_(reject_worsening), halvings_(halvings) {
+  /// `projector`: its bounding balls of the input faces spare distances.
+  Move_safety(const Flat_mesh& original, const Vertex_classification& classification, const Projector& projector,
+              double quality_floor, double fidelity_tolerance, bool reject_worsening, std::size_t halvings)
+      : m_(original), c_(classification), projector_(projector), quality_floor_(quality_floor),
+        fidelity_tolerance_(fidelity_tolerance), reject_worsening_(reject_worsening), halvings_(halvings) {
     // Reference orientation of each face: its input normal, or for a face that
     // is degenerate in the input the sum of its neighbours' normals. A face
     // folded in the input keeps its orientation: unfolding it would be a flip
@@ -507,15 +508,22 @@ private:
   // looked at first, and is set to the face found in reach: the one that was
   // in reach at the last call for the same point is most often in reach again,
   // vertices move little between two calls, so most scans look at one face.
+  // At the input positions, a face whose bounding ball lies farther from `x`
+  // than the best distance so far can neither lower it nor be in reach: its
+  // distance is not computed (the result is the same).
   template <class I, std::size_t N>
   double squared_distance_near(const Vec3& x, const std::vector<Vec3>& pos, const std::array<I, N>& around,
                                Index& witness) const {
     const double tolerance2 = fidelity_tolerance_ * fidelity_tolerance_;
+    const bool input = &pos == &m_.points;
     const std::size_t first = witness;
-    double best = std::numeric_limits<double>::infinity();
+    double best = std::numeric_limits<double>::infinity(), reach = best;
     auto in_reach = [&](std::size_t f) {
+      if (input && best != std::numeric_limits<double>::infinity() && !projector_.ball_within(x, f, reach))
+        return false;
       const auto& t = m_.faces[f];
-      best = (std::min)(best, squared_distance_to_triangle(x, pos[t[0]], pos[t[1]], pos[t[2]]));
+      const double d = squared_distance_to_triangle(x, pos[t[0]], pos[t[1]], pos[t[2]]);
+      if (d < best) best = d, reach = std::sqrt(best) + Projector::ball_slack;
       if (best > tolerance2) return false;
       witness = Index(f);
       return true;
@@ -566,6 +574,7 @@ private:
 
   const Flat_mesh& m_;
   const Vertex_classification& c_;
+  const Projector& projector_;
   double quality_floor_;
   double fidelity_tolerance_;
   bool reject_worsening_;

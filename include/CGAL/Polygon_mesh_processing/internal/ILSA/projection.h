@@ -377,9 +377,9 @@ public:
     return true;
   }
 
-private:
-  // Whether the bounding ball of face `g` comes within `reach` of `x`
-  // (true for an infinite reach).
+  /// Whether the bounding ball of input face `g` comes within `reach` of `x`
+  /// (true for an infinite reach). When it does not, the distance from `x` to
+  /// the face exceeds `reach` less `ball_slack`.
   bool ball_within(const Vec3& x, std::size_t g, double reach) const {
     const Ball& b = balls_[g];
     const double gap = reach + double(b.radius);
@@ -387,6 +387,11 @@ private:
     return !((x - c).squaredNorm() > gap * gap);
   }
 
+  /// Allowance for the rounding of the bounding-ball test (normalised units),
+  /// far above its errors (about 1e-16) and far below the margin.
+  static constexpr double ball_slack = 1e-13;
+
+private:
   // Bounding balls of the faces, in floats: the centre rounded, the radius
   // measured from the rounded centre and rounded up, so that the ball holds
   // the face.
@@ -415,9 +420,6 @@ private:
   static constexpr double margin = 1e-10;
   // A face is thin when twice its area is below this fraction of its longest edge squared.
   static constexpr double thin_ratio = 1e-2;
-  // Allowance for the rounding of the bounding-ball test (normalised units),
-  // far above its errors (about 1e-16) and far below the margin.
-  static constexpr double ball_slack = 1e-13;
 
   const Flat_mesh& m_;
   const Vertex_classification& c_;
