@@ -538,14 +538,14 @@ int main() {
                 << ", relax1 " << relax1 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa
                 << ", angle " << angle << ", fix " << fix << ", floor " << (default_floor ? -1. : floor)
                 << ", monotone " << monotone << ", reject worsening " << reject_worsening << ", kink " << kink
-                << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain " << remaining_gain << ", project " << project << ", safety " << safety
-                << ", range " << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map
-                << ", relax " << relax << "): flipped " << f.number_of_flipped_faces << ", distance "
-                << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
-                << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
-                << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
-                << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
-                << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
+                << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain " << remaining_gain
+                << ", project " << project << ", safety " << safety << ", range " << use_range << ", vertex map "
+                << use_vertex_map << ", edge map " << use_edge_map << ", relax " << relax << "): flipped "
+                << f.number_of_flipped_faces << ", distance " << f.max_vertex_distance << ", fixed moved "
+                << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed << ", min q "
+                << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
+                << f.max_crease_deviation << ", parallel run identical " << same_in_parallel << ", same faces "
+                << same_faces << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
                 << statistics.number_of_iterations << " iterations run, " << allowed << " allowed"
                 << ", ridge vertex off the creases " << ridge_off_crease << ", one-iteration worsening test "
                 << worsening_ok << ", vertices four edges apart " << isolated_ok << ", convergence stop "

@@ -257,8 +257,7 @@ void test_penalty_cholesky() {
       continue;
     }
     const ilsa::Vec3 expected = llt.solve(r);
-    for (int i = 0; i < 3; ++i)
-      assert(x(i) == expected(i) || (std::isnan(x(i)) && std::isnan(expected(i))));
+    for (int i = 0; i < 3; ++i) assert(x(i) == expected(i) || (std::isnan(x(i)) && std::isnan(expected(i))));
     ++solved;
   }
   std::cout << "penalty Cholesky: " << solved << " solved as by Eigen::LLT, " << refused << " refused as by it"
@@ -275,15 +274,14 @@ template <class Mesh> void test_named_parameter_chaining() {
     const auto s = PMP::smooth_surface_mesh_ilsa(m, np);
     return std::make_pair(points_of(m), s.number_of_iterations);
   };
-  const auto a = run(
-      CGAL::parameters::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_minimum_remaining_gain(0.).ilsa_relaxation(0.3));
-  const auto b = run(
-      CGAL::parameters::ilsa_minimum_remaining_gain(0.).ilsa_relaxation(0.3).ilsa_penalty_mu(5.).number_of_iterations(4));
-  const auto default_mu =
-      run(CGAL::parameters::number_of_iterations(4).ilsa_relaxation(0.3).ilsa_minimum_remaining_gain(0.));
-  const auto default_relax =
-      run(CGAL::parameters::ilsa_penalty_mu(5.).number_of_iterations(4).ilsa_minimum_remaining_gain(0.));
-  const auto default_stop = run(CGAL::parameters::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_relaxation(0.3));
+  namespace params = CGAL::parameters;
+  const auto a =
+      run(params::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_minimum_remaining_gain(0.).ilsa_relaxation(0.3));
+  const auto b =
+      run(params::ilsa_minimum_remaining_gain(0.).ilsa_relaxation(0.3).ilsa_penalty_mu(5.).number_of_iterations(4));
+  const auto default_mu = run(params::number_of_iterations(4).ilsa_relaxation(0.3).ilsa_minimum_remaining_gain(0.));
+  const auto default_relax = run(params::ilsa_penalty_mu(5.).number_of_iterations(4).ilsa_minimum_remaining_gain(0.));
+  const auto default_stop = run(params::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_relaxation(0.3));
   assert(a.second == 4 && b.second == 4 && default_stop.second < 4);
   assert(max_difference(a.first, b.first) == 0);
   assert(max_difference(a.first, default_mu.first) > 1e-6);
@@ -602,10 +600,11 @@ void test_convergence_stop(const std::string& file, double remaining_gain, bool 
     return x;
   };
   std::vector<double> mean; // after 0, 1, ... iterations
-  for (std::size_t k = 0; k <= std::size_t(cap); ++k) mean.push_back(PMP::mesh_quality_ilsa(capped(k)).mean_aspect_ratio);
-  std::cout << "convergence stop on " << file << " (remaining gain " << remaining_gain << "): " << ran << " of "
-            << cap << " iterations, mean q " << PMP::mesh_quality_ilsa(m).mean_aspect_ratio << " against "
-            << mean.back() << std::endl;
+  for (std::size_t k = 0; k <= std::size_t(cap); ++k)
+    mean.push_back(PMP::mesh_quality_ilsa(capped(k)).mean_aspect_ratio);
+  std::cout << "convergence stop on " << file << " (remaining gain " << remaining_gain << "): " << ran << " of " << cap
+            << " iterations, mean q " << PMP::mesh_quality_ilsa(m).mean_aspect_ratio << " against " << mean.back()
+            << std::endl;
   assert(ran >= 2 && ran < std::size_t(cap));
   assert(points_of(m) == points_of(capped(ran)));
   // Up to the rounding of the mean in the input's coordinates.
@@ -637,8 +636,7 @@ template <class Mesh> void test_callback() {
   const std::function<bool(double)> stop_after_two = [&](double) { return ++calls < 2; };
   const auto t = PMP::smooth_surface_mesh_ilsa(stopped, np.callback(stop_after_two));
   PMP::smooth_surface_mesh_ilsa(
-      shorter,
-      CGAL::parameters::number_of_iterations(2).ilsa_minimum_quality_gain(0.).ilsa_minimum_remaining_gain(0.));
+      shorter, CGAL::parameters::number_of_iterations(2).ilsa_minimum_quality_gain(0.).ilsa_minimum_remaining_gain(0.));
   assert(calls == 2 && t.number_of_iterations == 2);
   assert(points_of(stopped) == points_of(shorter) && points_of(stopped) != points_of(plain));
   std::cout << "callback: " << seen.size() << " calls, stopped after " << t.number_of_iterations << std::endl;
