@@ -298,11 +298,14 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   penalty.sweeps = std::size_t(sweeps);
 
   // Frozen flat copy of the input (T_ori), user constraints, vertex range.
+  // (Without a user map, the vertex numbering is a dynamic property of `tm`,
+  // freed once the copy is made, as everything below that only the set-up needs.)
   std::vector<typename GT::vertex_descriptor> vertex_list;
-  ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, np))> vertex_index{ilsa::vertex_index_map_of(tm, np), {}};
   std::vector<typename GT::edge_descriptor> edge_list;
-  const ilsa::Flat_mesh original =
-      ilsa::build_flat_mesh(tm, vpm, vertex_list, vertex_index, ilsa::face_index_map_of(tm, np), edge_list);
+  ilsa::Flat_mesh original = [&] {
+    ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, np))> vertex_index{ilsa::vertex_index_map_of(tm, np), {}};
+    return ilsa::build_flat_mesh(tm, vpm, vertex_list, vertex_index, ilsa::face_index_map_of(tm, np), edge_list);
+  }();
   std::vector<unsigned char> constrained_vertices, constrained_edges;
   const auto options = ilsa::read_classification_parameters(tm, original, np, vertex_list, edge_list,
                                                             constrained_vertices, constrained_edges);
@@ -322,7 +325,10 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   }
 
   // Classify vertices on T_ori (paper §3).
-  const ilsa::Vertex_classification classification = ilsa::classify(original, options);
+  ilsa::Vertex_classification classification = ilsa::classify(original, options);
+  ilsa::release(classification.ridge_candidate), ilsa::release(classification.attached_sharp);
+  ilsa::release(edge_list), ilsa::release(constrained_vertices), ilsa::release(constrained_edges);
+  ilsa::release(original.on_border), ilsa::release(original.non_manifold);
   ILSA_statistics stats;
   ilsa::count_types(classification, stats);
   if (verbose)
@@ -331,6 +337,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
               << " boundary vertices\n";
 
   const ilsa::Ilsa_neighborhoods neighborhoods = ilsa::make_ilsa_neighborhoods(original, classification, movable);
+  ilsa::release(movable);
   if (neighborhoods.adjustable.empty() || iterations == 0) return stats;
 
   if (default_floor) {
@@ -342,8 +349,13 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     quality_floor = (std::max)(quality_floor, input_minimum);
   }
   const ilsa::Projector projector(original, classification, ConcurrencyTag());
+  // One per-face array for three uses in turn: the penalty step's weights, the
+  // safety check's aspect ratios, the mean aspect ratio of the convergence stop.
+  std::vector<double> face_values;
   ilsa::Move_safety safety(original, classification, projector, quality_monotone ? 1. : quality_floor,
-                           fidelity_tolerance, reject_worsening, 3);
+                           fidelity_tolerance, reject_worsening, 3, face_values);
+  // Read by the classification and the two constructors above only.
+  ilsa::release(original.edge_faces), ilsa::release(classification.sharp_edge);
   auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
     if (!do_project) return ilsa::Projector::Result{q, home, false};
     return projector.project(v, q, current, home);
@@ -356,25 +368,24 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   penalty.tolerance = tolerance;
 
   // T_new := T_ori. `home` is the original face (ridge: sharp edge) each vertex lies on.
-  // `target`: v + d, the position before projection (fixed vertices: their own).
-  std::vector<Vec3> pos = original.points, next, target = pos, d;
+  // `next` also serves as the sweeps' second buffer before the projection fills it.
+  std::vector<Vec3> pos = original.points, next, d;
   std::vector<ilsa::Index> home(pos.size(), ilsa::npos), next_home;
-  std::vector<std::size_t> moved;
+  std::vector<ilsa::Index> moved;
+  moved.reserve(neighborhoods.adjustable.size());
   std::vector<unsigned char> guarded(pos.size(), 0), skipped(pos.size(), 0);
   for (std::size_t v : neighborhoods.adjustable) home[v] = projector.initial_home(v);
   ilsa::Ilsa_workspace ilsa_workspace;
-  ilsa::Penalty_workspace penalty_workspace;
   // Convergence (user manual, "Stopping early"): the mean aspect ratio of the
   // faces, each face's computed in parallel, summed in face order.
-  std::vector<double> face_quality(original.number_of_faces());
   auto mean_quality = [&]() {
-    ilsa::parallel_for<ConcurrencyTag>(face_quality.size(), [&](std::size_t f) {
+    ilsa::parallel_for<ConcurrencyTag>(face_values.size(), [&](std::size_t f) {
       const auto& t = original.faces[f];
-      face_quality[f] = triangle_aspect_ratio(pos[t[0]], pos[t[1]], pos[t[2]]);
+      face_values[f] = triangle_aspect_ratio(pos[t[0]], pos[t[1]], pos[t[2]]);
     });
     double sum = 0;
-    for (double q : face_quality) sum += q;
-    return sum / double((std::max)(face_quality.size(), std::size_t(1)));
+    for (double q : face_values) sum += q;
+    return sum / double((std::max)(face_values.size(), std::size_t(1)));
   };
   const bool may_stop = minimum_gain > 0 || minimum_remaining_gain > 0;
   double mean_q = may_stop ? mean_quality() : 0.;
@@ -384,25 +395,20 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     // (Algo. 3; the face normals of T_new give the discrete normal N(v) of
     // paper §3 where the penalty plane needs it).
     ilsa::compute_ilsa_displacement<ConcurrencyTag>(pos, neighborhoods, relax1, std::size_t(sweeps), tolerance, d,
-                                                    ilsa_workspace);
-    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, neighborhoods, penalty, d, penalty_workspace,
-                                                         ilsa_workspace.next);
+                                                    ilsa_workspace, next);
+    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, neighborhoods, penalty, d, face_values, next);
 
     // p(v): projection of v + d(v) onto T_ori (user manual, "Projection guard"), then the safety check; a
     // move the check dropped in the previous iteration is first tried without projection (its pre-test).
-    ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {
-      const std::size_t v = neighborhoods.adjustable[i];
-      target[v] = pos[v] + d[v];
-    });
-    if (use_safety) safety.template prepare_pretest<ConcurrencyTag>(target);
+    if (use_safety) safety.template prepare_pretest<ConcurrencyTag>(pos, d);
     next = pos;
     next_home = home;
     ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {
       const std::size_t v = neighborhoods.adjustable[i];
-      skipped[v] = use_safety && safety.drop_before_projection(pos, target, v);
+      skipped[v] = use_safety && safety.drop_before_projection(pos, d, v);
       guarded[v] = 0;
       if (skipped[v]) return;
-      const auto r = project(v, target[v], pos[v], home[v]);
+      const auto r = project(v, pos[v] + d[v], pos[v], home[v]);
       next[v] = r.point;
       next_home[v] = ilsa::Index(r.home);
       guarded[v] = r.guarded;
@@ -412,10 +418,10 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     for (std::size_t v : neighborhoods.adjustable) {
       stats.number_of_guarded_projections += guarded[v];
       skipped_moves += skipped[v];
-      if (next[v] != pos[v]) moved.push_back(v);
+      if (next[v] != pos[v]) moved.push_back(ilsa::Index(v));
     }
     if (use_safety) {
-      const auto counts = safety.template enforce<ConcurrencyTag>(pos, home, target, moved, next, next_home, project);
+      const auto counts = safety.template enforce<ConcurrencyTag>(pos, home, d, moved, next, next_home, project);
       stats.number_of_shortened_moves += counts.shortened;
       stats.number_of_rejected_moves += counts.rejected + skipped_moves;
       stats.number_of_moves_dropped_before_projection += skipped_moves;

@@ -134,6 +134,11 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
   return (ap - (vb / sum) * ab - (vc / sum) * ac).squaredNorm();
 }
 
+/// Frees the storage of `v` (`clear()` keeps it).
+template <class T> void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
 /// Unit normal of triangle `f`, or zero for a degenerate triangle.
 inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<Index, 3>& f) {
   const Vec3 n = area_vector(pos, f);

@@ -24,69 +24,88 @@ namespace ILSA {
 /// Which vertices move and which neighbours drive them (paper's Algo. 2): all one-ring
 /// vertices for a smooth node, only its two attached-sharp nodes for a ridge node.
 struct Ilsa_neighborhoods {
-  std::vector<std::size_t> adjustable; // smooth and ridge vertices allowed to move
-  std::vector<std::size_t> smooth;     // the smooth ones among them (Algo. 3)
-  Adjacency neighbors;                 // per vertex; empty for a fixed vertex
+  const Flat_mesh* mesh = nullptr;
+  const Vertex_classification* classification = nullptr;
+  std::vector<Index> adjustable; // smooth and ridge vertices allowed to move
+  std::vector<Index> smooth;     // the smooth ones among them (Algo. 3)
+
+  /// Calls `f(w, e)` for each neighbour `w` driving the adjustable vertex `v`
+  /// and the edge `e` between them, in the order of the one ring.
+  template <class F> void for_each_neighbor(std::size_t v, F f) const {
+    const Vertex_classification& c = *classification;
+    if (c.type[v] == ILSA_vertex_type::Ridge) {
+      for (std::size_t e : c.attached_edges[v]) {
+        const auto& ends = mesh->edges[e];
+        f(std::size_t(ends[0] == v ? ends[1] : ends[0]), e); // its attached-sharp node
+      }
+      return;
+    }
+    const Index* e = mesh->vertex_edges.first(v);
+    for (const Index* w = mesh->vertex_neighbors.first(v); w != mesh->vertex_neighbors.last(v); ++w, ++e)
+      f(std::size_t(*w), std::size_t(*e));
+  }
 };
 
-/// `movable[v]` is false for the vertices outside the user's range.
+/// `movable[v]` is false for the vertices outside the user's range. `m` and
+/// `c` must outlive the result: it keeps pointers.
 inline Ilsa_neighborhoods make_ilsa_neighborhoods(const Flat_mesh& m, const Vertex_classification& c,
                                                   const std::vector<unsigned char>& movable) {
   Ilsa_neighborhoods nb;
+  nb.mesh = &m;
+  nb.classification = &c;
   for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
     if (c.is_fixed(v) || !movable[v]) continue;
-    nb.adjustable.push_back(v);
-    if (c.type[v] != ILSA_vertex_type::Ridge) nb.smooth.push_back(v);
+    nb.adjustable.push_back(Index(v));
+    if (c.type[v] != ILSA_vertex_type::Ridge) nb.smooth.push_back(Index(v));
   }
-  nb.neighbors.assign(m.number_of_vertices(), [&](auto emit) {
-    for (std::size_t v : nb.adjustable) {
-      if (c.type[v] == ILSA_vertex_type::Ridge) {
-        emit(v, c.attached_sharp[v][0]);
-        emit(v, c.attached_sharp[v][1]);
-      } else {
-        for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w) emit(v, *w);
-      }
-    }
-  });
+  nb.adjustable.shrink_to_fit();
+  nb.smooth.shrink_to_fit();
   return nb;
 }
 
 /// Buffers reused across iterations, so the sweeps do not allocate.
 struct Ilsa_workspace {
-  std::vector<Vec3> next;      // Jacobi target buffer (shared with Algo. 3)
-  std::vector<double> weights; // α_ij, aligned with Ilsa_neighborhoods::neighbors.items
+  std::vector<double> weights; // α_ij, per edge (the weight of an edge is the same from both ends)
 };
 
 /// Algo. 2: fills `d` (one entry per vertex, zero for fixed ones) and returns
 /// the number of sweeps run. `tolerance` stops the sweeps once no displacement
-/// changes by more than it.
+/// changes by more than it. `buffer`: the sweeps' second buffer, overwritten
+/// (the caller lends any per-vertex array it does not need meanwhile).
 template <class ConcurrencyTag>
 std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const Ilsa_neighborhoods& nb, double relax1,
-                                      std::size_t sweeps, double tolerance, std::vector<Vec3>& d, Ilsa_workspace& ws) {
-  const Adjacency& N = nb.neighbors;
+                                      std::size_t sweeps, double tolerance, std::vector<Vec3>& d, Ilsa_workspace& ws,
+                                      std::vector<Vec3>& buffer) {
+  const Flat_mesh& m = *nb.mesh;
   d.assign(pos.size(), Vec3::Zero());
-  ws.weights.resize(N.items.size());
 
-  // Laplacian coordinate and inverse-distance weights α_ij = 1 / |v − v_j|.
+  // Inverse-distance weights α_ij = 1 / |v − v_j| (|v − v_j| and |v_j − v| are
+  // the same number: the differences are exact negations of each other).
   const double shortest = 1e-12; // a zero-length edge must not give an infinite weight
+  ws.weights.resize(m.edges.size());
+  parallel_for<ConcurrencyTag>(m.edges.size(), [&](std::size_t e) {
+    ws.weights[e] = 1. / (std::max)((pos[m.edges[e][0]] - pos[m.edges[e][1]]).norm(), shortest);
+  });
+
+  // Laplacian coordinate.
   parallel_for<ConcurrencyTag>(nb.adjustable.size(), [&](std::size_t i) {
     const std::size_t v = nb.adjustable[i];
     Vec3 centroid = Vec3::Zero();
-    for (std::size_t k = N.begin[v]; k < N.begin[v + 1]; ++k) {
-      const Vec3& w = pos[N.items[k]];
-      centroid += w;
-      ws.weights[k] = 1. / (std::max)((pos[v] - w).norm(), shortest);
-    }
-    d[v] = centroid / double(N.size(v)) - pos[v];
+    std::size_t count = 0;
+    nb.for_each_neighbor(v, [&](std::size_t w, std::size_t) {
+      centroid += pos[w];
+      ++count;
+    });
+    d[v] = centroid / double(count) - pos[v];
   });
 
-  return run_jacobi_sweeps<ConcurrencyTag>(nb.adjustable, sweeps, tolerance, d, ws.next, [&](std::size_t v) {
+  return run_jacobi_sweeps<ConcurrencyTag>(nb.adjustable, sweeps, tolerance, d, buffer, [&](std::size_t v) {
     Vec3 vec = Vec3::Zero();
     double S = 0;
-    for (std::size_t k = N.begin[v]; k < N.begin[v + 1]; ++k) {
-      vec += ws.weights[k] * d[N.items[k]];
-      S += ws.weights[k];
-    }
+    nb.for_each_neighbor(v, [&](std::size_t w, std::size_t e) {
+      vec += ws.weights[e] * d[w];
+      S += ws.weights[e];
+    });
     return Vec3((1. - relax1) * d[v] + (relax1 / S) * vec);
   });
 }

@@ -24,7 +24,7 @@ namespace ILSA {
 /// from `d`) over `vertices`, stopping once no value changes by more than
 /// `tolerance`. `next` is the second buffer. Returns the number of sweeps run.
 template <class ConcurrencyTag, class Update>
-std::size_t run_jacobi_sweeps(const std::vector<std::size_t>& vertices, std::size_t sweeps, double tolerance,
+std::size_t run_jacobi_sweeps(const std::vector<Index>& vertices, std::size_t sweeps, double tolerance,
                               std::vector<Vec3>& d, std::vector<Vec3>& next, const Update& update) {
   next = d; // entries the sweeps do not write stay equal in both buffers
   std::size_t sweep = 0;

@@ -51,36 +51,41 @@ public:
   /// `reject_worsening`: drop a move that lowers the mean aspect ratio of the
   /// vertex's star, the neighbours being at their new positions.
   /// `projector`: its bounding balls of the input faces spare distances.
+  /// `face_scratch`: a per-face array the check works in during enforce() and
+  /// from prepare_pretest() to the next enforce(); the caller may use it
+  /// between the end of enforce() and prepare_pretest() (one array less).
   Move_safety(const Flat_mesh& original, const Vertex_classification& classification, const Projector& projector,
-              double quality_floor, double fidelity_tolerance, bool reject_worsening, std::size_t halvings)
+              double quality_floor, double fidelity_tolerance, bool reject_worsening, std::size_t halvings,
+              std::vector<double>& face_scratch)
       : m_(original), c_(classification), projector_(projector), quality_floor_(quality_floor),
-        fidelity_tolerance_(fidelity_tolerance), reject_worsening_(reject_worsening), halvings_(halvings) {
-    // Reference orientation of each face: its input normal, or for a face that
-    // is degenerate in the input the sum of its neighbours' normals. A face
-    // folded in the input keeps its orientation: unfolding it would be a flip
-    // with respect to the input, which the package never makes.
-    std::vector<Vec3> own(m_.number_of_faces()), neighbors(m_.number_of_faces(), Vec3::Zero());
-    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) own[f] = unit_normal(m_.points, m_.faces[f]);
-    for (const auto& fs : m_.edge_faces)
-      if (fs[0] != npos && fs[1] != npos) {
-        neighbors[fs[0]] += own[fs[1]];
-        neighbors[fs[1]] += own[fs[0]];
-      }
-    reference_.resize(m_.number_of_faces());
-    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) reference_[f] = own[f].isZero(0) ? neighbors[f] : own[f];
+        fidelity_tolerance_(fidelity_tolerance), reject_worsening_(reject_worsening),
+        halvings_((std::min)(halvings, std::size_t(100))), quality_now_(face_scratch) {
+    // Reference orientation of each face (see reference()): for a face that is
+    // degenerate in the input, the sum of its neighbours' normals, stored.
+    for (std::size_t f = 0; f < m_.number_of_faces(); ++f)
+      if (unit_normal(m_.points, m_.faces[f]).isZero(0)) degenerate_faces_.push_back(Index(f));
+    degenerate_references_.assign(degenerate_faces_.size(), Vec3::Zero());
+    if (!degenerate_faces_.empty())
+      for (const auto& fs : m_.edge_faces)
+        if (fs[0] != npos && fs[1] != npos)
+          for (int k = 0; k < 2; ++k) {
+            const auto found = std::lower_bound(degenerate_faces_.begin(), degenerate_faces_.end(), fs[k]);
+            if (found != degenerate_faces_.end() && *found == fs[k])
+              degenerate_references_[std::size_t(found - degenerate_faces_.begin())] +=
+                  unit_normal(m_.points, m_.faces[fs[1 - k]]);
+          }
     offends_.assign(m_.number_of_faces(), 0);
-    quality_now_.assign(m_.number_of_faces(), 0.);
+    quality_now_.resize(m_.number_of_faces());
     face_round_.assign(m_.number_of_faces(), 0);
     deviation_round_.assign(m_.number_of_faces(), 0);
     bad_.assign(m_.number_of_vertices(), 0);
-    face_now_.assign(m_.number_of_faces(), 0.);
+    face_now_.assign(m_.number_of_faces(), std::numeric_limits<double>::infinity());
     vertex_round_.assign(m_.number_of_vertices(), 0);
     changed_round_.assign(m_.number_of_vertices(), 0);
     ring_changed_.assign(m_.number_of_vertices(), 0);
     vertex_now_.assign(m_.number_of_vertices(), 0.);
     vertex_witness_.assign(m_.number_of_vertices(), npos);
-    travel_.assign(m_.number_of_vertices(), 0.);
-    face_bound_.assign(m_.number_of_faces(), std::numeric_limits<float>::infinity());
+    travel_.assign(m_.number_of_vertices(), 0.f);
     face_travel_.assign(m_.number_of_faces(), {0.f, 0.f, 0.f});
     face_witness_.resize(m_.number_of_faces());
     for (Index f = 0; f < m_.number_of_faces(); ++f) face_witness_[f] = {f, f, f, f};
@@ -96,7 +101,8 @@ public:
   };
 
   /// `previous`: accepted positions (and homes) before this iteration;
-  /// `target`: the unprojected positions v + d; `next`/`next_home`: the
+  /// `d`: the displacements (the unprojected position of `v` is
+  /// `previous[v] + d[v]`); `next`/`next_home`: the
   /// projected positions, corrected in place. `moved` lists the vertices whose
   /// position changed. `project` re-projects a shortened move.
   ///
@@ -108,12 +114,12 @@ public:
   /// fidelity tests share and the fidelity tests; then the shortening of the
   /// offending moves and the stamps of the stars they change.
   template <class ConcurrencyTag, class Project>
-  Counts enforce(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home,
-                 const std::vector<Vec3>& target, const std::vector<std::size_t>& moved, std::vector<Vec3>& next,
-                 std::vector<Index>& next_home, const Project& project) {
+  Counts enforce(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home, const std::vector<Vec3>& d,
+                 const std::vector<Index>& moved, std::vector<Vec3>& next, std::vector<Index>& next_home,
+                 const Project& project) {
     for (std::size_t v : moved) {
       tries_[v] = 0, is_moved_[v] = 1;
-      travel_[v] += (next[v] - previous[v]).norm();
+      travel_[v] = added_up(travel_[v], (next[v] - previous[v]).norm());
     }
     // A round either shortens a move or is followed by a round that does or
     // by none (a round of cheap tests without offenders hands over to the
@@ -122,7 +128,6 @@ public:
     // again from 0: stamps of earlier calls only need to be older than this call's.
     if (std::size_t(round_) + 2 * (halvings_ + 2) * (moved.size() + 1) >
         std::size_t((std::numeric_limits<Round>::max)())) {
-      std::fill(checked_.begin(), checked_.end(), Round(0));
       for (auto* stamps : {&face_round_, &deviation_round_, &vertex_round_, &changed_round_, &ring_changed_})
         stamps->fill(0);
       round_ = 0;
@@ -132,7 +137,10 @@ public:
     const bool quality_tests = quality_floor_ > 0 || reject_worsening_;
     // to_check: vertices for the cheap tests (flip, collapse, quality);
     // to_measure: vertices that passed them since their last fidelity test.
-    std::vector<std::size_t> to_check(moved), to_measure, offenders;
+    // (The first round checks `moved` itself, not a copy.)
+    std::vector<Index> to_check, to_measure, offenders;
+    to_measure.reserve(moved.size()); // each moved vertex is in it at most once
+    bool first = true;
     // Whether a value computed in round `computed` of this call still holds,
     // the positions it depends on having last changed in round `changed`.
     auto current = [&](std::size_t computed, std::size_t changed) {
@@ -153,15 +161,17 @@ public:
     // (user manual, "Order of the safety check's tests"): most moves the check
     // drops fail a cheap test, and each one dropped changes the stars of its
     // neighbours.
-    while (!to_check.empty() || !to_measure.empty()) {
+    while (!(first ? moved : to_check).empty() || !to_measure.empty()) {
       ++round_;
-      const bool measuring = to_check.empty();
+      const std::vector<Index>& checking = first ? moved : to_check;
+      first = false;
+      const bool measuring = checking.empty();
       if (!measuring) {
         // The faces around the vertices to check: which offend (unless known
         // from an earlier round of this call with the same positions), each
         // computed by the iteration that claims it.
-        parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
-          const std::size_t v = to_check[i];
+        parallel_for<ConcurrencyTag>(checking.size(), [&](std::size_t i) {
+          const std::size_t v = checking[i];
           for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
             if (!claim(face_round_, *f, face_changed(*f))) continue;
             offends_[*f] = offends(previous, next, *f);
@@ -173,8 +183,8 @@ public:
         });
         // A vertex is shortened when any face around it offends, so every moved
         // vertex of an offending face is; then the quality tests.
-        parallel_for<ConcurrencyTag>(to_check.size(), [&](std::size_t i) {
-          const std::size_t v = to_check[i];
+        parallel_for<ConcurrencyTag>(checking.size(), [&](std::size_t i) {
+          const std::size_t v = checking[i];
           bad_[v] = 0;
           for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
             if (offends_[*f]) bad_[v] = 1;
@@ -189,14 +199,14 @@ public:
             // Dropped at once: a shorter step along a worsening direction rarely
             // helps, and each halving costs a re-projection.
             bad_[v] = 1;
-            tries_[v] = halvings_;
+            tries_[v] = static_cast<unsigned char>(halvings_);
           }
         });
         if (fidelity)
-          for (std::size_t v : to_check)
+          for (std::size_t v : checking)
             if (!bad_[v] && !queued_[v]) {
               queued_[v] = 1;
-              to_measure.push_back(v);
+              to_measure.push_back(Index(v));
             }
       } else {
         // The fidelity tests, on the vertices that passed the cheap tests and
@@ -221,14 +231,12 @@ public:
           for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
           for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
             if (!claim(deviation_round_, *f, face_changed(*f))) continue;
-            if (face_within_tolerance(*f)) {
-              face_now_[*f] = 0.; // only ever compared with the tolerance
-              continue;
-            }
+            // A face within the tolerance keeps its last value, also within
+            // it: the value is only ever compared with the tolerance.
+            if (face_within_tolerance(*f)) continue;
             face_now_[*f] = face_deviation(next, *f, face_witness_[*f]);
             const auto& t = m_.faces[*f];
-            face_bound_[*f] = rounded_up(face_now_[*f]);
-            face_travel_[*f] = {rounded_down(travel_[t[0]]), rounded_down(travel_[t[1]]), rounded_down(travel_[t[2]])};
+            face_travel_[*f] = {travel_[t[0]], travel_[t[1]], travel_[t[2]]};
           }
         });
         parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
@@ -237,8 +245,8 @@ public:
         });
       }
       offenders.clear();
-      for (std::size_t v : measuring ? to_measure : to_check)
-        if (bad_[v]) offenders.push_back(v);
+      for (std::size_t v : measuring ? to_measure : checking)
+        if (bad_[v]) offenders.push_back(Index(v));
       if (measuring) to_measure.clear();
       parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
         const std::size_t v = offenders[i];
@@ -246,14 +254,15 @@ public:
         const Vec3 before = next[v];
         if (tries_[v] <= halvings_) {
           const double t = std::ldexp(1., -int(tries_[v]));
-          const auto r = project(v, previous[v] + t * (target[v] - previous[v]), previous[v], previous_home[v]);
+          const Vec3 target = previous[v] + d[v];
+          const auto r = project(v, previous[v] + t * (target - previous[v]), previous[v], previous_home[v]);
           next[v] = r.point;
           next_home[v] = Index(r.home);
         } else {
           next[v] = previous[v];
           next_home[v] = previous_home[v];
         }
-        travel_[v] += (next[v] - before).norm();
+        travel_[v] = added_up(travel_[v], (next[v] - before).norm());
       });
       // Only the stars of the vertices just changed need a new look.
       parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
@@ -271,10 +280,11 @@ public:
       for (std::size_t v : offenders)
         for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
           for (std::size_t w : m_.faces[*f])
-            if (is_moved_[w] && tries_[w] <= halvings_ && checked_[w] != round_) {
-              checked_[w] = round_;
-              to_check.push_back(w);
+            if (is_moved_[w] && tries_[w] <= halvings_ && !checked_[w]) {
+              checked_[w] = 1;
+              to_check.push_back(Index(w));
             }
+      for (std::size_t w : to_check) checked_[w] = 0;
     }
     ++call_;
     Counts counts;
@@ -289,34 +299,49 @@ public:
     return counts;
   }
 
-  /// The worsening pre-test (user manual, "Worsening pre-test"), before projection:
-  /// `target` holds the unprojected positions v + d of all vertices (the
-  /// current position for a fixed one). Afterwards drop_before_projection()
-  /// may be asked about any vertex.
-  template <class ConcurrencyTag> void prepare_pretest(const std::vector<Vec3>& target) {
+  /// The worsening pre-test (user manual, "Worsening pre-test"), before projection,
+  /// at the unprojected positions `pos[v] + d[v]` of all vertices (`d` is zero
+  /// for a fixed one). Afterwards drop_before_projection() may be asked about any vertex.
+  template <class ConcurrencyTag> void prepare_pretest(const std::vector<Vec3>& pos, const std::vector<Vec3>& d) {
     if (!reject_worsening_ || call_ == 0) return;
     // quality_now_ is free between two calls of enforce(): a call only reads
     // the values it computed itself (see `current` there).
     parallel_for<ConcurrencyTag>(m_.number_of_faces(), [&](std::size_t f) {
       const auto& t = m_.faces[f];
-      quality_now_[f] = triangle_aspect_ratio(target[t[0]], target[t[1]], target[t[2]]);
+      const Vec3 a = pos[t[0]] + d[t[0]], b = pos[t[1]] + d[t[1]], c = pos[t[2]] + d[t[2]];
+      quality_now_[f] = triangle_aspect_ratio(a, b, c);
     });
   }
 
-  /// Whether to drop the move of `v` to `target[v]` without projecting and
+  /// Whether to drop the move of `v` to `pos[v] + d[v]` without projecting and
   /// checking it: its move was dropped in the previous iteration, and the
   /// mean aspect ratio of its star, every vertex at its target, is lower than
   /// with `v` staying at `pos[v]`. Every move made still passes enforce(),
   /// so the test can cost quality, never a guarantee.
-  bool drop_before_projection(const std::vector<Vec3>& pos, const std::vector<Vec3>& target, std::size_t v) const {
+  bool drop_before_projection(const std::vector<Vec3>& pos, const std::vector<Vec3>& d, std::size_t v) const {
     if (!reject_worsening_ || call_ == 0 || dropped_in_[v] != call_) return false;
     // The worsening test of enforce(), with the targets for `next` and `pos[v]` for `previous[v]`.
-    return star_quality_now(v).mean < star_quality(target, v, pos[v]).mean;
+    return star_quality_now(v).mean <
+           star_quality_at(
+               v, [&](std::size_t w) -> Vec3 { return w == v ? pos[v] : Vec3(pos[w] + d[w]); })
+               .mean;
   }
 
   /// Orientation of face `f` at positions `pos` against the original surface.
   bool flipped(const std::vector<Vec3>& pos, std::size_t f) const {
-    return area_vector(pos, m_.faces[f]).dot(reference_[f]) <= 0;
+    return area_vector(pos, m_.faces[f]).dot(reference(f)) <= 0;
+  }
+
+  /// Reference orientation of face `f`: its input normal, or for a face that
+  /// is degenerate in the input the sum of its neighbours' normals. A face
+  /// folded in the input keeps its orientation: unfolding it would be a flip
+  /// with respect to the input, which the package never makes. Computed when
+  /// needed (24 bytes per face less to store; a few dozen operations per test).
+  Vec3 reference(std::size_t f) const {
+    const Vec3 own = unit_normal(m_.points, m_.faces[f]);
+    if (!own.isZero(0)) return own;
+    const auto found = std::lower_bound(degenerate_faces_.begin(), degenerate_faces_.end(), Index(f));
+    return degenerate_references_[std::size_t(found - degenerate_faces_.begin())];
   }
 
   bool collapsed(const std::vector<Vec3>& pos, std::size_t f) const {
@@ -460,22 +485,19 @@ private:
   // tolerance, without computing it: the distance to a fixed set of faces
   // grows by at most the distance the point moves, the points measured are
   // averages of the face's vertices, and each vertex has moved by at most
-  // its travel since face_bound_[f] was computed (margins for rounding).
-  // The bound and the travels are stored as floats, rounded so that the
-  // bound stays a bound.
+  // its travel since face_now_[f] was computed (margins for rounding).
   bool face_within_tolerance(std::size_t f) const {
     const auto& t = m_.faces[f];
     double drift = 0;
-    for (std::size_t k = 0; k < 3; ++k) drift = (std::max)(drift, travel_[t[k]] - double(face_travel_[f][k]));
-    return double(face_bound_[f]) + drift * (1. + 1e-9) + 1e-14 < fidelity_tolerance_;
+    for (std::size_t k = 0; k < 3; ++k) drift = (std::max)(drift, double(travel_[t[k]]) - double(face_travel_[f][k]));
+    return face_now_[f] + drift * (1. + 1e-9) + 1e-14 < fidelity_tolerance_;
   }
-  static float rounded_up(double x) {
-    const float f = float(x);
-    return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-  }
-  static float rounded_down(double x) {
-    const float f = float(x);
-    return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  // `travel + step` as a float rounded up: the travels are stored as floats,
+  // and each one stays at least the length of its vertex's path.
+  static float added_up(float travel, double step) {
+    const double sum = double(travel) + step;
+    const float f = float(sum);
+    return double(f) < sum ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
   }
 
   // Largest distance from the centroid and the edge midpoints of face `f` at
@@ -560,7 +582,11 @@ private:
 
   // Worst and mean aspect ratio around `v`, with `v` at `at` and the others at `pos`.
   Star_quality star_quality(const std::vector<Vec3>& pos, std::size_t v, const Vec3& at) const {
-    auto point = [&](std::size_t w) -> const Vec3& { return w == v ? at : pos[w]; };
+    return star_quality_at(v, [&](std::size_t w) -> const Vec3& { return w == v ? at : pos[w]; });
+  }
+
+  // The same with each vertex `w` of the star at `point(w)`.
+  template <class Point> Star_quality star_quality_at(std::size_t v, const Point& point) const {
     Star_quality q;
     for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
       const auto& t = m_.faces[*f];
@@ -579,23 +605,25 @@ private:
   double fidelity_tolerance_;
   bool reject_worsening_;
   std::size_t halvings_;
-  std::vector<Vec3> reference_;
+  std::vector<Index> degenerate_faces_;            // faces degenerate in the input, in increasing order
+  std::vector<Vec3> degenerate_references_;        // their reference orientations
   std::vector<unsigned char> offends_;             // per face, in the current round
-  std::vector<double> quality_now_;                // per face: its aspect ratio at `next`, likewise (at the
-                                                   // targets between two calls, for the pre-test)
+  std::vector<double>& quality_now_;               // per face: its aspect ratio at `next`, likewise (at the
+                                                   // targets from prepare_pretest() to enforce()); the caller's
   std::vector<unsigned char> bad_;                 // per vertex: its move offends, in the current round
-  std::vector<Index> tries_;                       // halvings applied to a vertex's move
-  std::vector<Round> checked_;                     // round in which a vertex was queued for a check
+  std::vector<unsigned char> tries_;               // halvings applied to a vertex's move (at most halvings_ + 1)
+  std::vector<unsigned char> checked_;             // per vertex: already in the next list to check
   std::vector<unsigned char> queued_;              // per vertex: in the list for the fidelity tests
   Claim_stamps face_round_;                        // round in which a face's offending flag was computed
   Claim_stamps deviation_round_, vertex_round_;    // round in which the deviations below were computed
   Claim_stamps changed_round_;                     // last round in which a vertex's move changed
   Claim_stamps ring_changed_;                      // the same, for any vertex up to two edges away
-  std::vector<double> face_now_, vertex_now_;      // face_deviation / vertex_deviation at `next`
+  std::vector<double> face_now_, vertex_now_;      // face_deviation (see face_within_tolerance()) and
+                                                   // vertex_deviation at `next`
   std::vector<Index> vertex_witness_;              // face first looked at by vertex_deviation
   std::vector<std::array<Index, 4>> face_witness_; // the same, for each point of face_deviation
-  std::vector<double> travel_;                     // per vertex: length of the path of its position at `next`
-  std::vector<float> face_bound_;                  // per face: face_deviation when last computed
+  std::vector<float> travel_;                      // per vertex: length of the path of its position at `next`
+                                                   // (at least: each step is added rounded up)
   std::vector<std::array<float, 3>> face_travel_;  // travel_ of the face's vertices then
   std::vector<unsigned char> is_moved_;
   std::vector<std::uint32_t> dropped_in_; // per vertex: the last call of enforce() that dropped its move

@@ -35,10 +35,6 @@ struct Penalty_parameters {
   double tolerance = 0;      // stop once no displacement changes by more
 };
 
-struct Penalty_workspace {
-  std::vector<double> beta; // β = 1 / s(v, v_j, v_j+1), per face of the current mesh
-};
-
 /// Plane of the soft constraint c(x) = 0 (user manual, "Plane constraint units"), as `a · (x − v) = k` with
 /// unit `a`. With no displacement yet it is the tangent plane at `v`, whose
 /// normal N(v) (paper §3, normalised) `vertex_normal()` computes; otherwise the
@@ -135,25 +131,27 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 
 /// Algo. 3 on the smooth vertices of `nb`; `d` holds Algo. 2's displacements on
 /// entry and the adjusted ones on exit; `buffer` is the sweeps' second buffer
-/// (the caller shares it with Algo. 2). Returns the number of sweeps run.
+/// and `beta` receives β = 1 / s(v, v_j, v_j+1) per face of the current mesh
+/// (both overwritten: the caller lends arrays it does not need meanwhile).
+/// Returns the number of sweeps run.
 template <class ConcurrencyTag>
 std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
                                            const Ilsa_neighborhoods& nb, const Penalty_parameters& p,
-                                           std::vector<Vec3>& d, Penalty_workspace& ws, std::vector<Vec3>& buffer) {
+                                           std::vector<Vec3>& d, std::vector<double>& beta, std::vector<Vec3>& buffer) {
   // β_j from the current faces; a floor at 1e-3 of the mean area keeps a
   // degenerate face from swamping the star.
-  ws.beta.resize(m.number_of_faces());
+  beta.resize(m.number_of_faces());
   parallel_for<ConcurrencyTag>(m.number_of_faces(),
-                               [&](std::size_t f) { ws.beta[f] = 0.5 * area_vector(pos, m.faces[f]).norm(); });
+                               [&](std::size_t f) { beta[f] = 0.5 * area_vector(pos, m.faces[f]).norm(); });
   double mean_area = 0; // summed in face order, whatever the number of threads
-  for (double area : ws.beta) mean_area += area;
+  for (double area : beta) mean_area += area;
   mean_area /= double((std::max)(m.number_of_faces(), std::size_t(1)));
   const double smallest_area = (std::max)(1e-3 * mean_area, 1e-300);
   parallel_for<ConcurrencyTag>(m.number_of_faces(),
-                               [&](std::size_t f) { ws.beta[f] = 1. / (std::max)(ws.beta[f], smallest_area); });
+                               [&](std::size_t f) { beta[f] = 1. / (std::max)(beta[f], smallest_area); });
 
   return run_jacobi_sweeps<ConcurrencyTag>(nb.smooth, p.sweeps, p.tolerance, d, buffer, [&](std::size_t v) {
-    const Vec3 d_new = minimize_penalty_function(m, pos, d, ws.beta, v, p);
+    const Vec3 d_new = minimize_penalty_function(m, pos, d, beta, v, p);
     return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
   });
 }

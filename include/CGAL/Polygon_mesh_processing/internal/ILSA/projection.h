@@ -47,6 +47,7 @@
 #include <boost/iterator/counting_iterator.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -128,11 +129,9 @@ public:
     }
     for (std::size_t f = 0; f < patch_.size(); ++f) patch_[f] = find(f);
 
-    edge_to_segment_.assign(m_.edges.size(), npos);
     for (std::size_t e = 0; e < m_.edges.size(); ++e) {
       if (c_.crease_of_edge[e] == npos) continue;
-      edge_to_segment_[e] = segments_.size();
-      segment_edge_.push_back(e);
+      segment_edge_.push_back(Index(e));
       segments_.emplace_back(point(m_.points[m_.edges[e][0]]), point(m_.points[m_.edges[e][1]]));
     }
     if (!segments_.empty()) crease_tree_.rebuild(segments_.cbegin(), segments_.cend()), crease_tree_.build();
@@ -156,6 +155,12 @@ public:
 private:
   static Point point(const Vec3& p) { return Point(p.x(), p.y(), p.z()); }
   static Vec3 vec(const Point& p) { return Vec3(p.x(), p.y(), p.z()); }
+
+  // The segment of crease edge `e` (a binary search: a table per edge would
+  // cost 4 bytes per edge, and few vertices are ridge vertices).
+  std::size_t segment_of(std::size_t e) const {
+    return std::size_t(std::lower_bound(segment_edge_.begin(), segment_edge_.end(), Index(e)) - segment_edge_.begin());
+  }
 
   // Faces sharing a vertex with face `home`, in its patch.
   template <class F> void for_each_face_near(std::size_t home, F f) const {
@@ -202,7 +207,7 @@ public:
 private:
   Result project_on_crease(const Vec3& q, const Vec3& current, std::size_t home) const {
     const Point query = point(q);
-    const auto hint = std::make_pair(point(current), segments_.cbegin() + std::ptrdiff_t(edge_to_segment_[home]));
+    const auto hint = std::make_pair(point(current), segments_.cbegin() + std::ptrdiff_t(segment_of(home)));
     const auto found = crease_tree_.closest_point_and_primitive(query, hint);
     const std::size_t e = segment_edge_[std::size_t(found.second - segments_.cbegin())];
     bool near = false;
@@ -213,7 +218,7 @@ private:
     double best_distance = (q - current).squaredNorm();
     K::Construct_projected_point_3 closest;
     for_each_crease_edge_near(home, [&](std::size_t g) {
-      const Vec3 p = vec(closest(segments_[edge_to_segment_[g]], query));
+      const Vec3 p = vec(closest(segments_[segment_of(g)], query));
       const double distance = (q - p).squaredNorm();
       if (distance < best_distance) best = {p, g, true}, best_distance = distance;
     });
@@ -316,7 +321,7 @@ private:
                                          (m_.points[t[0]] - m_.points[t[2]]).squaredNorm()});
       thin_[f] = longest == 0 || !(area_vector(m_.points, m_.faces[f]).norm() >= thin_ratio * longest);
     }
-    clearance_.assign(m_.number_of_vertices(), -1.);
+    clearance_.assign(m_.number_of_vertices(), -1.f);
     if (n == 0) return;
     parallel_for<ConcurrencyTag>(m_.number_of_vertices(), [&](std::size_t w) {
       if (m_.vertex_faces.size(w) == 0) return;
@@ -326,7 +331,12 @@ private:
         for (const Index* g = m_.vertex_faces.first(*u); g != m_.vertex_faces.last(*u); ++g)
           if (!incident(*g, w)) traits.best = (std::min)(traits.best, squared_distance_at_least(m_.points[w], *g));
       face_tree_.traversal_with_priority(point(m_.points[w]), traits);
-      clearance_[w] = std::sqrt(traits.best) - margin;
+      // Stored as a float rounded down: a smaller clearance only sends more
+      // queries to the tree, whose answer is the same.
+      const double clearance = std::sqrt(traits.best) - margin;
+      float stored = float(clearance);
+      if (double(stored) > clearance) stored = std::nextafter(stored, -std::numeric_limits<float>::infinity());
+      clearance_[w] = stored;
     });
   }
 
@@ -366,7 +376,7 @@ public:
     const double reach = std::sqrt(best) + margin;
     if (!(std::sqrt(second) > reach && std::sqrt(other) > reach && (q - current).norm() > reach)) return false;
     double clear = -1.;
-    for (Index w : m_.faces[home]) clear = (std::max)(clear, clearance_[w] - (q - m_.points[w]).norm());
+    for (Index w : m_.faces[home]) clear = (std::max)(clear, double(clearance_[w]) - (q - m_.points[w]).norm());
     if (!(clear > reach)) {
       Reach_traits traits{this, q, home, reach * reach};
       face_tree_.traversal(point(q), traits);
@@ -423,13 +433,12 @@ private:
 
   const Flat_mesh& m_;
   const Vertex_classification& c_;
-  std::vector<double> clearance_;   // per vertex, see compute_clearances()
+  std::vector<float> clearance_;    // per vertex, see compute_clearances()
   std::vector<unsigned char> thin_; // per face
   std::vector<Ball> balls_;         // per face, see compute_balls()
   std::vector<Segment> segments_;
-  std::vector<Index> segment_edge_;    // segment -> edge
-  std::vector<Index> edge_to_segment_; // edge -> segment, npos if not sharp
-  std::vector<Index> patch_;           // face -> representative face of its patch
+  std::vector<Index> segment_edge_; // segment -> edge, in increasing order
+  std::vector<Index> patch_;        // face -> representative face of its patch
   Face_tree face_tree_;
   Crease_tree crease_tree_;
 };
