@@ -444,6 +444,60 @@ template <class Mesh> void test_local_projection() {
   }
 }
 
+// The safety check's reference orientation of a face that is degenerate in
+// the input: the sum of the unit normals of its neighbours across its edges
+// (stored for these faces only; the others' is their input normal, recomputed
+// when tested). On a planar grid (every normal +z) whose vertex (2,1) is moved
+// onto vertex (1,1), the two faces they share have two vertices at one point;
+// their reference points along +z, so such a face unfolded counter-clockwise is
+// not flipped and one unfolded clockwise is. (The bundled and shared meshes
+// have no face degenerate in this exact sense.)
+template <class Mesh> void test_degenerate_reference() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  constexpr int n = 4;
+  Soup s = grid(n, double(n));
+  auto id = [](int i, int j) { return std::size_t(j * (n + 1) + i); };
+  s.points[id(2, 1)] = s.points[id(1, 1)];
+  const Mesh tm = to_mesh<Mesh>(s);
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list;
+  std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> edge_list;
+  const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list);
+  std::vector<unsigned char> constrained_vertices, constrained_edges;
+  const auto options = ilsa::read_classification_parameters(tm, m, CGAL::parameters::default_values(), vertex_list,
+                                                            edge_list, constrained_vertices, constrained_edges);
+  const ilsa::Vertex_classification c = ilsa::classify(m, options);
+  const ilsa::Projector projector(m, c, CGAL::Sequential_tag());
+  std::vector<double> scratch;
+  const ilsa::Move_safety safety(m, c, projector, 0.5, 3e-4, true, 3, scratch);
+  std::size_t degenerate = 0;
+  for (std::size_t f = 0; f < m.number_of_faces(); ++f) {
+    const auto& t = m.faces[f];
+    const ilsa::Vec3 own = ilsa::unit_normal(m.points, t), reference = safety.reference(f);
+    if (!own.isZero(0)) {
+      assert(reference == own);
+      assert(!safety.flipped(m.points, f));
+      continue;
+    }
+    ++degenerate;
+    assert(reference.x() == 0 && reference.y() == 0 && reference.z() >= 1);
+    // Unfold it: move the first of its two coincident vertices across the line
+    // to the third one, either way.
+    const std::size_t k = m.points[t[0]] == m.points[t[1]] || m.points[t[0]] == m.points[t[2]] ? 0 : 1;
+    const std::size_t a = t[k], w = m.points[t[(k + 1) % 3]] == m.points[a] ? t[(k + 2) % 3] : t[(k + 1) % 3];
+    const ilsa::Vec3 side = m.points[w] - m.points[a], across = 0.1 * ilsa::Vec3(-side.y(), side.x(), 0.);
+    std::vector<ilsa::Vec3> one = m.points, other = m.points;
+    one[a] += across;
+    other[a] -= across;
+    const bool one_up = ilsa::area_vector(one, t).z() > 0;
+    assert(ilsa::area_vector(other, t).z() != 0 && ilsa::area_vector(one, t).z() != 0);
+    assert(safety.flipped(one, f) == !one_up);
+    assert(safety.flipped(other, f) == one_up);
+  }
+  std::cout << "reference orientation: " << degenerate << " faces degenerate in the input, oriented as their neighbours"
+            << std::endl;
+  assert(degenerate == 2);
+}
+
 // Fidelity tolerance: no input vertex ends farther from the smoothed surface
 // than the tolerance, and no face centroid or edge midpoint farther from the
 // input surface. Without the bound (the paper's variant) the same run on the
@@ -690,6 +744,8 @@ int main() {
   test_locality_order();
   test_penalty_vertex_normal();
   test_penalty_cholesky();
+  test_degenerate_reference<Surface_mesh>();
+  test_degenerate_reference<Polyhedron>();
   test_named_parameter_chaining<Surface_mesh>();
   test_named_parameter_chaining<Polyhedron>();
   test_vertex_range<Surface_mesh>();
