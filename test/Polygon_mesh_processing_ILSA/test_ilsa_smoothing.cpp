@@ -392,6 +392,32 @@ template <class Mesh> void test_thin_shell() {
 // the thin shell, whose vertex clearances rule out little, most of them come
 // from the traversal within reach (project_near()), which must then find every
 // face of the other sheet that the tree's answer would come from.
+// The smoothing call's set-up of `tm` with the default parameters: flat
+// copy, vertex classification and projector (it keeps references to the
+// first two: an object of this type is not copied).
+template <class Mesh> struct Package_setup {
+  using Flat_mesh = CGAL::Polygon_mesh_processing::internal::ILSA::Flat_mesh;
+  using Classification = CGAL::Polygon_mesh_processing::internal::ILSA::Vertex_classification;
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list;
+  std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> edge_list;
+  const Flat_mesh m;
+  const Classification c;
+  const CGAL::Polygon_mesh_processing::internal::ILSA::Projector projector;
+
+  explicit Package_setup(const Mesh& tm)
+      : m(flat_copy(tm, vertex_list, edge_list)), c(classification_of(tm)), projector(m, c, CGAL::Sequential_tag()) {}
+  Package_setup(const Package_setup&) = delete;
+
+private:
+  Classification classification_of(const Mesh& tm) {
+    namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+    std::vector<unsigned char> constrained_vertices, constrained_edges;
+    const auto options = ilsa::read_classification_parameters(tm, m, CGAL::parameters::default_values(), vertex_list,
+                                                              edge_list, constrained_vertices, constrained_edges);
+    return ilsa::classify(m, options);
+  }
+};
+
 template <class Mesh> void test_local_projection() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
   std::size_t n = 0;
@@ -402,14 +428,9 @@ template <class Mesh> void test_local_projection() {
   std::mt19937 rng(5);
   std::normal_distribution<double> normal;
   for (const auto& [name, tm] : meshes) {
-    std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list;
-    std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> edge_list;
-    const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list);
-    std::vector<unsigned char> constrained_vertices, constrained_edges;
-    const auto options = ilsa::read_classification_parameters(tm, m, CGAL::parameters::default_values(), vertex_list,
-                                                              edge_list, constrained_vertices, constrained_edges);
-    const ilsa::Vertex_classification c = ilsa::classify(m, options);
-    const ilsa::Projector projector(m, c, CGAL::Sequential_tag());
+    const Package_setup<Mesh> setup(tm);
+    const ilsa::Flat_mesh& m = setup.m;
+    const ilsa::Projector& projector = setup.projector;
     std::size_t local = 0, total = 0, guarded = 0;
     for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
       if (m.vertex_faces.size(v) == 0) continue;
@@ -459,16 +480,10 @@ template <class Mesh> void test_degenerate_reference() {
   auto id = [](int i, int j) { return std::size_t(j * (n + 1) + i); };
   s.points[id(2, 1)] = s.points[id(1, 1)];
   const Mesh tm = to_mesh<Mesh>(s);
-  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list;
-  std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> edge_list;
-  const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list);
-  std::vector<unsigned char> constrained_vertices, constrained_edges;
-  const auto options = ilsa::read_classification_parameters(tm, m, CGAL::parameters::default_values(), vertex_list,
-                                                            edge_list, constrained_vertices, constrained_edges);
-  const ilsa::Vertex_classification c = ilsa::classify(m, options);
-  const ilsa::Projector projector(m, c, CGAL::Sequential_tag());
+  const Package_setup<Mesh> setup(tm);
+  const ilsa::Flat_mesh& m = setup.m;
   std::vector<double> scratch;
-  const ilsa::Move_safety safety(m, c, projector, 0.5, 3e-4, true, 3, scratch);
+  const ilsa::Move_safety safety(m, setup.c, setup.projector, 0.5, 3e-4, true, 3, scratch);
   std::size_t degenerate = 0;
   for (std::size_t f = 0; f < m.number_of_faces(); ++f) {
     const auto& t = m.faces[f];
