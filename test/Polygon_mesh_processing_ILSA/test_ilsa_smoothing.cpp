@@ -382,16 +382,6 @@ template <class Mesh> void test_thin_shell() {
   assert(stats.number_of_guarded_projections > 0); // the guard had work to do
 }
 
-// The projection's local answer (projection.h) is the AABB tree's, bit for
-// bit, guard flag included: targets around every vertex at distances from
-// 1 % to 1.5 edge lengths, above the vertex along its normal (a closest point
-// shared by its faces: a tie the local answer must leave to the tree) and at
-// the vertex itself, on meshes with creases, slivers, mirror symmetry and two
-// sheets closer than an edge. A good share of the targets must get the local
-// answer (in a real run, most do), or the comparison would prove little; on
-// the thin shell, whose vertex clearances rule out little, most of them come
-// from the traversal within reach (project_near()), which must then find every
-// face of the other sheet that the tree's answer would come from.
 // The smoothing call's set-up of `tm` with the default parameters: flat
 // copy, vertex classification and projector (it keeps references to the
 // first two: an object of this type is not copied).
@@ -418,6 +408,16 @@ private:
   }
 };
 
+// The projection's local answer (projection.h) is the AABB tree's, bit for
+// bit, guard flag included: targets around every vertex at distances from
+// 1 % to 1.5 edge lengths, above the vertex along its normal (a closest point
+// shared by its faces: a tie the local answer must leave to the tree) and at
+// the vertex itself, on meshes with creases, slivers, mirror symmetry and two
+// sheets closer than an edge. A good share of the targets must get the local
+// answer (in a real run, most do), or the comparison would prove little; on
+// the thin shell, whose vertex clearances rule out little, most of them come
+// from the traversal within reach (project_near()), which must then find every
+// face of the other sheet that the tree's answer would come from.
 template <class Mesh> void test_local_projection() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
   std::size_t n = 0;

@@ -351,7 +351,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const ilsa::Projector projector(original, classification, ConcurrencyTag());
   // One per-face array for three uses in turn: the penalty step's weights, the
   // safety check's aspect ratios, the mean aspect ratio of the convergence stop.
-  std::vector<double> face_values;
+  std::vector<double> face_values(original.number_of_faces());
   ilsa::Move_safety safety(original, classification, projector, quality_monotone ? 1. : quality_floor,
                            fidelity_tolerance, reject_worsening, 3, face_values);
   // Read by the classification and the two constructors above only.

@@ -134,6 +134,17 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
   return (ap - (vb / sum) * ab - (vc / sum) * ac).squaredNorm();
 }
 
+/// `x` as a float no smaller than `x` (rounded up), or no larger (rounded
+/// down): for bounds stored in floats that must stay bounds.
+inline float float_rounded_up(double x) {
+  const float f = float(x);
+  return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+inline float float_rounded_down(double x) {
+  const float f = float(x);
+  return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+
 /// Frees the storage of `v` (`clear()` keeps it).
 template <class T> void release(std::vector<T>& v) {
   std::vector<T>().swap(v);

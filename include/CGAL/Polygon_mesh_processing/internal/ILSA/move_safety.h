@@ -494,11 +494,7 @@ private:
   }
   // `travel + step` as a float rounded up: the travels are stored as floats,
   // and each one stays at least the length of its vertex's path.
-  static float added_up(float travel, double step) {
-    const double sum = double(travel) + step;
-    const float f = float(sum);
-    return double(f) < sum ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-  }
+  static float added_up(float travel, double step) { return float_rounded_up(double(travel) + step); }
 
   // Largest distance from the centroid and the edge midpoints of face `f` at
   // `pos` to the input surface around the face's vertices. `witnesses`: for

@@ -333,10 +333,7 @@ private:
       face_tree_.traversal_with_priority(point(m_.points[w]), traits);
       // Stored as a float rounded down: a smaller clearance only sends more
       // queries to the tree, whose answer is the same.
-      const double clearance = std::sqrt(traits.best) - margin;
-      float stored = float(clearance);
-      if (double(stored) > clearance) stored = std::nextafter(stored, -std::numeric_limits<float>::infinity());
-      clearance_[w] = stored;
+      clearance_[w] = float_rounded_down(std::sqrt(traits.best) - margin);
     });
   }
 
@@ -419,8 +416,7 @@ private:
       const Vec3 c(double(b.center[0]), double(b.center[1]), double(b.center[2]));
       double radius = 0;
       for (Index w : t) radius = (std::max)(radius, (m_.points[w] - c).norm());
-      b.radius = float(radius);
-      if (double(b.radius) < radius) b.radius = std::nextafter(b.radius, std::numeric_limits<float>::infinity());
+      b.radius = float_rounded_up(radius);
     }
   }
 
