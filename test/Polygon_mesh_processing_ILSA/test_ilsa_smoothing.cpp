@@ -513,6 +513,67 @@ template <class Mesh> void test_degenerate_reference() {
   assert(degenerate == 2);
 }
 
+// A face collapsed in the input may open again only the right way round: the
+// safety check keeps a move that opens both collapsed faces of a vertex with
+// their reference orientation, and drops one that opens either reversed,
+// whether the two vertices of the short edge coincide (zero-area faces) or
+// lie 1e-7 apart (needles: oriented, yet below the collapse tolerance).
+// Only the orientation is tested (no quality floor, no worsening test, no
+// fidelity bound), on a plane, where projecting changes nothing.
+template <class Mesh> void test_collapsed_faces_open_right_way() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  constexpr int n = 4;
+  auto id = [](int i, int j) { return std::size_t(j * (n + 1) + i); };
+  for (const double gap : {0., 1e-7}) {
+    // Vertex (2, 1) next to (1, 1): the faces (1,0)-(2,1)-(1,1) and
+    // (1,1)-(2,1)-(2,2) collapse; moved by (dx, dy), they open the right way
+    // round when dx > -gap and dx > dy - gap respectively.
+    Soup s = grid(n, double(n));
+    s.points[id(2, 1)] = Point(1. + gap, 1., 0.);
+    const Mesh tm = to_mesh<Mesh>(s);
+    const Package_setup<Mesh> setup(tm);
+    const ilsa::Flat_mesh& m = setup.m;
+    std::vector<double> scratch;
+    ilsa::Move_safety safety(m, setup.c, setup.projector, 0., std::numeric_limits<double>::infinity(), false, 3,
+                             scratch);
+    // Vertex (2, 1): at (1 + gap, 1) and next to (2, 0), unlike (1, 1). The
+    // package's coordinates are centred and divided by the diagonal.
+    auto flat = [&](double x, double y) { return ilsa::Vec3((ilsa::Vec3(x, y, 0.) - m.center) / m.scale); };
+    const ilsa::Vec3 at = flat(1. + gap, 1.);
+    std::size_t a = ilsa::npos, collapsed = 0;
+    for (std::size_t v = 0; v < m.number_of_vertices(); ++v)
+      for (const ilsa::Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w)
+        if ((m.points[v] - at).norm() < 1e-9 && (m.points[*w] - flat(2., 0.)).norm() < 1e-9) a = v;
+    for (std::size_t f = 0; f < m.number_of_faces(); ++f)
+      if (safety.collapsed(m.points, f)) ++collapsed;
+    assert(a != ilsa::npos && collapsed == 2);
+    std::vector<ilsa::Index> home(m.number_of_vertices(), ilsa::Index(ilsa::npos));
+    for (std::size_t v = 0; v < m.number_of_vertices(); ++v) home[v] = *m.vertex_faces.first(v);
+    auto project = [](std::size_t, const ilsa::Vec3& q, const ilsa::Vec3&, std::size_t h) {
+      return ilsa::Projector::Result{q, h, false};
+    };
+    std::size_t kept = 0;
+    for (const auto& move : {std::make_pair(0.1, 0.), std::make_pair(-0.1, 0.), std::make_pair(0.1, 0.2)}) {
+      std::vector<ilsa::Vec3> d(m.number_of_vertices(), ilsa::Vec3::Zero()), next = m.points;
+      std::vector<ilsa::Index> next_home = home;
+      d[a] = ilsa::Vec3(move.first, move.second, 0.) / m.scale;
+      next[a] += d[a];
+      const auto counts = safety.enforce<CGAL::Sequential_tag>(
+          m.points, home, d, std::vector<ilsa::Index>{ilsa::Index(a)}, next, next_home, project);
+      const bool right_way = move.first > move.second;
+      for (std::size_t f = 0; f < m.number_of_faces(); ++f)
+        assert(safety.collapsed(next, f) || !safety.flipped(next, f));
+      if (right_way) {
+        assert(counts.rejected == 0 && counts.shortened == 0 && next[a] == m.points[a] + d[a]);
+        ++kept;
+      } else
+        assert(counts.rejected == 1 && next[a] == m.points[a]);
+    }
+    assert(kept == 1);
+  }
+  std::cout << "collapsed input faces: opened the right way round only (zero area and needles)" << std::endl;
+}
+
 // Fidelity tolerance: no input vertex ends farther from the smoothed surface
 // than the tolerance, and no face centroid or edge midpoint farther from the
 // input surface. Without the bound (the paper's variant) the same run on the
@@ -761,6 +822,8 @@ int main() {
   test_penalty_cholesky();
   test_degenerate_reference<Surface_mesh>();
   test_degenerate_reference<Polyhedron>();
+  test_collapsed_faces_open_right_way<Surface_mesh>();
+  test_collapsed_faces_open_right_way<Polyhedron>();
   test_named_parameter_chaining<Surface_mesh>();
   test_named_parameter_chaining<Polyhedron>();
   test_vertex_range<Surface_mesh>();

@@ -352,10 +352,15 @@ public:
   }
 
 private:
-  // A face offends if it is flipped or collapsed now and was not before.
+  // A face offends if it is collapsed now and was not before, or flipped and
+  // not collapsed now and was not so before. A face collapsed before (in the
+  // input: a needle, or two vertices at one point) may open again, but only
+  // with its reference orientation: opening it the other way round is a flip.
+  // (A face flipped and not collapsed before cannot occur: the input has none,
+  // and no move makes one.)
   bool offends(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t f) const {
-    const bool is_bad = collapsed(next, f) || flipped(next, f);
-    return is_bad && !(collapsed(previous, f) || flipped(previous, f));
+    if (collapsed(next, f)) return !collapsed(previous, f);
+    return flipped(next, f) && (collapsed(previous, f) || !flipped(previous, f));
   }
 
   // Whether the move of `v` takes the smoothed surface farther than the
