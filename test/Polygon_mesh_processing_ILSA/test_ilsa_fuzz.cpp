@@ -149,7 +149,7 @@ int main() {
 
   std::uniform_real_distribution<double> unit(0., 1.);
   const double unbounded = std::numeric_limits<double>::infinity();
-  int failures = 0, flip_only = 0, transformed = 0, transformed_elsewhere = 0;
+  int failures = 0, flip_only = 0, transformed = 0, transformed_elsewhere = 0, with_collapsed_edges = 0;
   double worst_transformed_difference = 0; // of the copies not scaled by a power of two
   int one_iteration_checked = 0, isolated_runs = 0, convergence_checked = 0;
   std::size_t isolated_moves = 0;
@@ -164,6 +164,25 @@ int main() {
     const std::size_t which = std::size_t(c) % meshes.size();
     Surface_mesh original = meshes[which];
     perturb_on_surface(original, 0.2 + 0.6 * unit(rng), unsigned(rng()));
+    // An eighth of the cases collapse up to three inner edges of the input
+    // (drawn from a generator of their own, so that the other draws stay as
+    // they were): one end moved onto the other (zero-area faces) or to 1e-7 of
+    // the edge's length from it (needles, oriented).
+    std::mt19937 collapse_rng(104729u + unsigned(c));
+    std::size_t collapsed_edges = 0;
+    if (unit(collapse_rng) < 0.125) {
+      const std::size_t tries = 1 + std::size_t(unit(collapse_rng) * 3);
+      for (std::size_t k = 0; k < tries; ++k) {
+        const Surface_mesh::Edge_index e(Surface_mesh::size_type(unit(collapse_rng) * double(num_edges(original))));
+        const vd a = source(halfedge(e, original), original), b = target(halfedge(e, original), original);
+        const bool coincident = unit(collapse_rng) < 0.5;
+        if (is_border(a, original) || is_border(b, original)) continue;
+        const Point& to = original.point(b);
+        original.point(a) = coincident ? to : to + 1e-7 * (original.point(a) - to);
+        ++collapsed_edges;
+      }
+      with_collapsed_edges += collapsed_edges > 0;
+    }
     auto draw = [&](double p) { return unit(rng) < p; };
     unsigned iterations = draw(0.1) ? 30 : 1 + unsigned(unit(rng) * 8);
     const unsigned steps = 1 + unsigned(unit(rng) * 5);
@@ -385,8 +404,36 @@ int main() {
     const bool callback_ok =
         callback_calls == statistics.number_of_iterations && statistics.number_of_iterations <= allowed;
     bool ok = same_in_parallel && non_finite == 0 && fixed_moved == 0 && transformed_ok && same_faces && callback_ok;
+    // Faces of zero area in the input (collapsed edges) have the sum of their
+    // neighbours' unit normals as their orientation (user manual, "Input
+    // faces that are collapsed"): opened again, they may not be reversed
+    // against it. A face
+    // counts as opened with twice its area above 1e-5 of its longest edge
+    // squared (ten times the package's collapse tolerance), and as reversed
+    // with a normal more than rounding beyond 90 degrees from that sum.
+    std::size_t reversed = 0;
+    for (auto fa : faces(original)) {
+      auto normal = [](const Surface_mesh& x, Surface_mesh::Face_index g) {
+        const auto h = halfedge(g, x);
+        const Point &p = x.point(source(h, x)), &q = x.point(target(h, x)), &r = x.point(target(next(h, x), x));
+        return CGAL::cross_product(q - p, r - p);
+      };
+      if (normal(original, fa) != CGAL::NULL_VECTOR) continue;
+      K::Vector_3 reference = CGAL::NULL_VECTOR;
+      for (auto h : CGAL::halfedges_around_face(halfedge(fa, original), original)) {
+        if (is_border(opposite(h, original), original)) continue;
+        const auto n = normal(original, face(opposite(h, original), original));
+        if (n != CGAL::NULL_VECTOR) reference = reference + n / std::sqrt(n.squared_length());
+      }
+      const auto n1 = normal(m, fa);
+      double longest = 0;
+      for (auto h : CGAL::halfedges_around_face(halfedge(fa, m), m))
+        longest = (std::max)(longest, CGAL::squared_distance(m.point(source(h, m)), m.point(target(h, m))));
+      if (std::sqrt(n1.squared_length()) <= 1e-5 * longest) continue;
+      reversed += n1 * reference <= 1e-9 * std::sqrt(n1.squared_length() * reference.squared_length());
+    }
     if (safety) {
-      ok = ok && f.number_of_flipped_faces == 0 && !collapsed && kept_minimum;
+      ok = ok && f.number_of_flipped_faces == 0 && reversed == 0 && !collapsed && kept_minimum;
       if (std::isfinite(tolerance)) ok = ok && f.max_crease_deviation <= tolerance + rounding;
     }
     if (project) ok = ok && f.max_vertex_distance <= 1e-9;
@@ -541,9 +588,10 @@ int main() {
                 << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain " << remaining_gain
                 << ", project " << project << ", safety " << safety << ", range " << use_range << ", vertex map "
                 << use_vertex_map << ", edge map " << use_edge_map << ", relax " << relax << "): flipped "
-                << f.number_of_flipped_faces << ", distance " << f.max_vertex_distance << ", fixed moved "
-                << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed << ", min q "
-                << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
+                << f.number_of_flipped_faces << ", collapsed edges " << collapsed_edges
+                << ", zero-area input faces opened reversed " << reversed << ", distance " << f.max_vertex_distance
+                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
+                << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
                 << f.max_crease_deviation << ", parallel run identical " << same_in_parallel << ", same faces "
                 << same_faces << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
                 << statistics.number_of_iterations << " iterations run, " << allowed << " allowed"
@@ -554,8 +602,8 @@ int main() {
     }
   }
   std::cout << "test_ilsa_fuzz: " << case_list.size() << " cases (" << flip_only
-            << " with the flip check as the only guard, " << transformed << " also transformed, "
-            << transformed_elsewhere
+            << " with the flip check as the only guard, " << with_collapsed_edges << " with collapsed edges, "
+            << transformed << " also transformed, " << transformed_elsewhere
             << " of them with vertices beyond rounding of the untransformed result, by at most "
             << worst_transformed_difference << " of the diagonal; " << one_iteration_checked
             << " one-iteration runs with the worsening test checked, " << isolated_runs
