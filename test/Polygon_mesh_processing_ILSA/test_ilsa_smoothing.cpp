@@ -513,6 +513,44 @@ template <class Mesh> void test_degenerate_reference() {
   assert(degenerate == 2);
 }
 
+// The safety check's and the convergence stop's aspect ratio (inlined, on the
+// package's vectors) is triangle_aspect_ratio(), bit for bit: on random
+// triangles of sizes 1e-150 to 1e150, and on degenerate ones (a vertex
+// repeated, three collinear points, a point triangle).
+void test_inlined_aspect_ratio() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  std::mt19937 rng(11);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> exponent(-150., 150.);
+  std::size_t compared = 0, degenerate = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const double scale = std::pow(10., exponent(rng));
+    std::array<ilsa::Vec3, 3> p;
+    for (auto& x : p) x = scale * ilsa::Vec3(normal(rng), normal(rng), normal(rng));
+    switch (i % 8) {
+    case 0:
+      p[2] = p[0];
+      break;
+    case 1:
+      p[2] = p[0] + 0.25 * (p[1] - p[0]);
+      break;
+    case 2:
+      p[1] = p[2] = p[0];
+      break;
+    default:
+      break;
+    }
+    const double inlined = ilsa::aspect_ratio(p[0], p[1], p[2]),
+                 reference = PMP::triangle_aspect_ratio(p[0], p[1], p[2]);
+    assert(inlined == reference);
+    degenerate += inlined == 0;
+    ++compared;
+  }
+  std::cout << "inlined aspect ratio: " << compared << " triangles, equal bit for bit (" << degenerate
+            << " of aspect ratio 0)" << std::endl;
+  assert(degenerate >= 100000 / 8);
+}
+
 // A face collapsed in the input may open again only the right way round: the
 // safety check keeps a move that opens both collapsed faces of a vertex with
 // their reference orientation, and drops one that opens either reversed,
@@ -822,6 +860,7 @@ int main() {
   test_penalty_cholesky();
   test_degenerate_reference<Surface_mesh>();
   test_degenerate_reference<Polyhedron>();
+  test_inlined_aspect_ratio();
   test_collapsed_faces_open_right_way<Surface_mesh>();
   test_collapsed_faces_open_right_way<Polyhedron>();
   test_named_parameter_chaining<Surface_mesh>();

@@ -381,7 +381,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   auto mean_quality = [&]() {
     ilsa::parallel_for<ConcurrencyTag>(face_values.size(), [&](std::size_t f) {
       const auto& t = original.faces[f];
-      face_values[f] = triangle_aspect_ratio(pos[t[0]], pos[t[1]], pos[t[2]]);
+      face_values[f] = ilsa::aspect_ratio(pos[t[0]], pos[t[1]], pos[t[2]]);
     });
     double sum = 0;
     for (double q : face_values) sum += q;

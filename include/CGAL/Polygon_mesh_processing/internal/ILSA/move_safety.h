@@ -174,11 +174,9 @@ public:
           const std::size_t v = checking[i];
           for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
             if (!claim(face_round_, *f, face_changed(*f))) continue;
-            offends_[*f] = offends(previous, next, *f);
-            if (quality_tests) {
-              const auto& t = m_.faces[*f];
-              quality_now_[*f] = triangle_aspect_ratio(next[t[0]], next[t[1]], next[t[2]]);
-            }
+            double quality;
+            offends_[*f] = offends(previous, next, *f, quality);
+            if (quality_tests) quality_now_[*f] = quality;
           }
         });
         // A vertex is shortened when any face around it offends, so every moved
@@ -309,7 +307,7 @@ public:
     parallel_for<ConcurrencyTag>(m_.number_of_faces(), [&](std::size_t f) {
       const auto& t = m_.faces[f];
       const Vec3 a = pos[t[0]] + d[t[0]], b = pos[t[1]] + d[t[1]], c = pos[t[2]] + d[t[2]];
-      quality_now_[f] = triangle_aspect_ratio(a, b, c);
+      quality_now_[f] = aspect_ratio(a, b, c);
     });
   }
 
@@ -358,9 +356,19 @@ private:
   // with its reference orientation: opening it the other way round is a flip.
   // (A face flipped and not collapsed before cannot occur: the input has none,
   // and no move makes one.)
-  bool offends(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t f) const {
-    if (collapsed(next, f)) return !collapsed(previous, f);
-    return flipped(next, f) && (collapsed(previous, f) || !flipped(previous, f));
+  // The test at `next` shares its edge vectors with the face's aspect ratio
+  // there, set in `quality` (collapsed(), flipped() and aspect_ratio(): the
+  // same operations, the same values).
+  bool offends(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t f, double& quality) const {
+    const auto& t = m_.faces[f];
+    const Vec3 &a = next[t[0]], &b = next[t[1]], &c = next[t[2]];
+    const Vec3 ab = b - a, area = ab.cross(c - a);
+    const std::array<double, 3> squared_length{(c - b).squaredNorm(), (a - c).squaredNorm(), ab.squaredNorm()};
+    const double double_area = area.norm();
+    quality = aspect_ratio_from(double_area, squared_length);
+    const double longest = (std::max)({squared_length[2], squared_length[0], squared_length[1]});
+    if (double_area <= collapse_tolerance * longest || longest == 0) return !collapsed(previous, f);
+    return area.dot(reference(f)) <= 0 && (collapsed(previous, f) || !flipped(previous, f));
   }
 
   // Whether the move of `v` takes the smoothed surface farther than the
@@ -591,7 +599,7 @@ private:
     Star_quality q;
     for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
       const auto& t = m_.faces[*f];
-      const double r = triangle_aspect_ratio(point(t[0]), point(t[1]), point(t[2]));
+      const double r = aspect_ratio(point(t[0]), point(t[1]), point(t[2]));
       q.worst = (std::min)(q.worst, r);
       q.mean += r;
     }
