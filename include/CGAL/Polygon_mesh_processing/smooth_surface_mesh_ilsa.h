@@ -376,6 +376,9 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   std::vector<unsigned char> guarded(pos.size(), 0), skipped(pos.size(), 0);
   for (std::size_t v : neighborhoods.adjustable) home[v] = projector.initial_home(v);
   ilsa::Ilsa_workspace ilsa_workspace;
+  // Its weights' array, idle during the penalty step, holds the step's
+  // targets (three doubles per vertex): one allocation for both.
+  ilsa_workspace.weights.reserve((std::max)(original.edges.size(), 3 * pos.size()));
   // Convergence (user manual, "Stopping early"): the mean aspect ratio of the
   // faces, each face's computed in parallel, summed in face order.
   auto mean_quality = [&]() {
@@ -396,7 +399,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     // paper §3 where the penalty plane needs it).
     ilsa::compute_ilsa_displacement<ConcurrencyTag>(pos, neighborhoods, relax1, std::size_t(sweeps), tolerance, d,
                                                     ilsa_workspace, next);
-    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, neighborhoods, penalty, d, face_values, next);
+    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, neighborhoods, penalty, d, face_values, next,
+                                                         ilsa_workspace.weights);
 
     // p(v): projection of v + d(v) onto T_ori (user manual, "Projection guard"), then the safety check; a
     // move the check dropped in the previous iteration is first tried without projection (its pre-test).

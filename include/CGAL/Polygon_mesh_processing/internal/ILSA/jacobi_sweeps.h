@@ -22,14 +22,17 @@ namespace ILSA {
 
 /// Runs at most `sweeps` sweeps of `update(v)` (the new value of `d[v]`, read
 /// from `d`) over `vertices`, stopping once no value changes by more than
-/// `tolerance`. `next` is the second buffer. Returns the number of sweeps run.
-template <class ConcurrencyTag, class Update>
+/// `tolerance`. `next` is the second buffer. `prepare()` runs before each
+/// sweep, with `d` as the sweep reads it. Returns the number of sweeps run.
+template <class ConcurrencyTag, class Update, class Prepare>
 std::size_t run_jacobi_sweeps(const std::vector<Index>& vertices, std::size_t sweeps, double tolerance,
-                              std::vector<Vec3>& d, std::vector<Vec3>& next, const Update& update) {
+                              std::vector<Vec3>& d, std::vector<Vec3>& next, const Update& update,
+                              const Prepare& prepare) {
   next = d; // entries the sweeps do not write stay equal in both buffers
   std::size_t sweep = 0;
   while (sweep < sweeps) {
     ++sweep;
+    prepare();
     const double largest_change = parallel_max<ConcurrencyTag>(vertices.size(), [&](std::size_t i) {
       const std::size_t v = vertices[i];
       next[v] = update(v);
@@ -39,6 +42,12 @@ std::size_t run_jacobi_sweeps(const std::vector<Index>& vertices, std::size_t sw
     if (largest_change <= tolerance) break;
   }
   return sweep;
+}
+
+template <class ConcurrencyTag, class Update>
+std::size_t run_jacobi_sweeps(const std::vector<Index>& vertices, std::size_t sweeps, double tolerance,
+                              std::vector<Vec3>& d, std::vector<Vec3>& next, const Update& update) {
+  return run_jacobi_sweeps<ConcurrencyTag>(vertices, sweeps, tolerance, d, next, update, [] {});
 }
 
 } // namespace ILSA

@@ -87,11 +87,13 @@ inline bool solve_by_cholesky(const Eigen::Matrix3d& H, const Vec3& r, Vec3& x) 
 
 /// Minimiser of Q(x; μ) for the smooth vertex `v`, relative to `pos[v]`.
 /// Every term is quadratic in x, so ∇Q = 0 is the 3x3 system H x = r. H is
-/// symmetric: only its lower triangle is accumulated.
+/// symmetric: only its lower triangle is accumulated. `target` holds
+/// `pos[w] + d[w]` of each vertex `w`, three coordinates each.
 inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3>& pos, const std::vector<Vec3>& d,
-                                      const std::vector<double>& beta, std::size_t v, const Penalty_parameters& p) {
+                                      const std::vector<double>& target, const std::vector<double>& beta, std::size_t v,
+                                      const Penalty_parameters& p) {
   const Vec3& x0 = pos[v];
-  auto pending = [&](std::size_t w) -> Vec3 { return pos[w] + d[w] - x0; };
+  auto pending = [&](std::size_t w) -> Vec3 { return Eigen::Map<const Vec3>(&target[3 * w]) - x0; };
 
   // Length term: ∇ = 2 wl (x − mean p_j).
   Eigen::Matrix3d H = 2. * p.length_weight * Eigen::Matrix3d::Identity();
@@ -130,14 +132,17 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 }
 
 /// Algo. 3 on the smooth vertices of `nb`; `d` holds Algo. 2's displacements on
-/// entry and the adjusted ones on exit; `buffer` is the sweeps' second buffer
-/// and `beta` receives β = 1 / s(v, v_j, v_j+1) per face of the current mesh
-/// (both overwritten: the caller lends arrays it does not need meanwhile).
+/// entry and the adjusted ones on exit; `buffer` is the sweeps' second buffer,
+/// `beta` receives β = 1 / s(v, v_j, v_j+1) per face of the current mesh and
+/// `target`, before each sweep, the unprojected target `pos + d` of each
+/// vertex, which every neighbour's solve reads up to three times (all three
+/// overwritten: the caller lends arrays it does not need meanwhile).
 /// Returns the number of sweeps run.
 template <class ConcurrencyTag>
 std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
                                            const Ilsa_neighborhoods& nb, const Penalty_parameters& p,
-                                           std::vector<Vec3>& d, std::vector<double>& beta, std::vector<Vec3>& buffer) {
+                                           std::vector<Vec3>& d, std::vector<double>& beta, std::vector<Vec3>& buffer,
+                                           std::vector<double>& target) {
   // β_j from the current faces; a floor at 1e-3 of the mean area keeps a
   // degenerate face from swamping the star.
   beta.resize(m.number_of_faces());
@@ -150,10 +155,19 @@ std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector
   parallel_for<ConcurrencyTag>(m.number_of_faces(),
                                [&](std::size_t f) { beta[f] = 1. / (std::max)(beta[f], smallest_area); });
 
-  return run_jacobi_sweeps<ConcurrencyTag>(nb.smooth, p.sweeps, p.tolerance, d, buffer, [&](std::size_t v) {
-    const Vec3 d_new = minimize_penalty_function(m, pos, d, beta, v, p);
-    return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
-  });
+  target.resize((std::max)(target.size(), 3 * pos.size()));
+  return run_jacobi_sweeps<ConcurrencyTag>(
+      nb.smooth, p.sweeps, p.tolerance, d, buffer,
+      [&](std::size_t v) {
+        const Vec3 d_new = minimize_penalty_function(m, pos, d, target, beta, v, p);
+        return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
+      },
+      [&] {
+        parallel_for<ConcurrencyTag>(pos.size(), [&](std::size_t w) {
+          Eigen::Map<Vec3> at(&target[3 * w]);
+          at = pos[w] + d[w];
+        });
+      });
 }
 
 } // namespace ILSA
