@@ -6,7 +6,9 @@
 // - always: no NaN, fixed vertices (corners, boundary, constrained, outside
 //   the vertex range) bit-identical, the parallel run (with TBB) gives the
 //   same points;
-// - with the safety check: no flipped or newly collapsed face, no face below
+// - with the safety check: no flipped or newly collapsed face (in an eighth
+//   of the cases the input has collapsed edges: its zero-area faces, opened
+//   again, may not be reversed against their neighbours), no face below
 //   the input's minimum aspect ratio or the quality floor, whichever is lower;
 //   with a finite fidelity tolerance, the input's sharp (or constrained) edges
 //   and the same edges of the result within it of each other, both ways (the
