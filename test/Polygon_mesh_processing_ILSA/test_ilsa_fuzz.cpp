@@ -407,32 +407,27 @@ int main() {
         callback_calls == statistics.number_of_iterations && statistics.number_of_iterations <= allowed;
     bool ok = same_in_parallel && non_finite == 0 && fixed_moved == 0 && transformed_ok && same_faces && callback_ok;
     // Faces of zero area in the input (collapsed edges) have the sum of their
-    // neighbours' unit normals as their orientation (user manual, "Input
-    // faces that are collapsed"): opened again, they may not be reversed
-    // against it. A face
-    // counts as opened with twice its area above 1e-5 of its longest edge
-    // squared (ten times the package's collapse tolerance), and as reversed
-    // with a normal more than rounding beyond 90 degrees from that sum.
+    // neighbours' unit normals as their orientation (user manual, "Input faces
+    // that are collapsed"): opened again, they may not be reversed against it.
+    // A face counts as opened with twice its area above 1e-5 of its longest
+    // edge squared (ten times the package's collapse tolerance), and as
+    // reversed with a normal more than rounding beyond 90 degrees from that sum.
     std::size_t reversed = 0;
+    const auto input_normals = face_normals_of(original), output_normals = face_normals_of(m); // in face order
     for (auto fa : faces(original)) {
-      auto normal = [](const Surface_mesh& x, Surface_mesh::Face_index g) {
-        const auto h = halfedge(g, x);
-        const Point &p = x.point(source(h, x)), &q = x.point(target(h, x)), &r = x.point(target(next(h, x), x));
-        return CGAL::cross_product(q - p, r - p);
-      };
-      if (normal(original, fa) != CGAL::NULL_VECTOR) continue;
+      if (input_normals[std::size_t(fa)] != CGAL::NULL_VECTOR) continue;
       K::Vector_3 reference = CGAL::NULL_VECTOR;
       for (auto h : CGAL::halfedges_around_face(halfedge(fa, original), original)) {
         if (is_border(opposite(h, original), original)) continue;
-        const auto n = normal(original, face(opposite(h, original), original));
+        const auto& n = input_normals[std::size_t(face(opposite(h, original), original))];
         if (n != CGAL::NULL_VECTOR) reference = reference + n / std::sqrt(n.squared_length());
       }
-      const auto n1 = normal(m, fa);
+      const auto& opened = output_normals[std::size_t(fa)];
       double longest = 0;
       for (auto h : CGAL::halfedges_around_face(halfedge(fa, m), m))
         longest = (std::max)(longest, CGAL::squared_distance(m.point(source(h, m)), m.point(target(h, m))));
-      if (std::sqrt(n1.squared_length()) <= 1e-5 * longest) continue;
-      reversed += n1 * reference <= 1e-9 * std::sqrt(n1.squared_length() * reference.squared_length());
+      if (std::sqrt(opened.squared_length()) <= 1e-5 * longest) continue;
+      reversed += opened * reference <= 1e-9 * std::sqrt(opened.squared_length() * reference.squared_length());
     }
     if (safety) {
       ok = ok && f.number_of_flipped_faces == 0 && reversed == 0 && !collapsed && kept_minimum;

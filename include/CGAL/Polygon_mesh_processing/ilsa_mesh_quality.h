@@ -79,8 +79,7 @@ inline Triangle_shape triangle_shape_of(const std::array<std::array<double, 3>, 
   return s;
 }
 
-// The same for three points. Small enough to be inlined where the safety
-// check computes the aspect ratios of a star, its hottest loop.
+// The same for three points.
 template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2) {
   return triangle_shape_of(triangle_coordinates(p0, p1, p2));
 }
@@ -99,6 +98,14 @@ template <class P> Triangle_shape triangle_shape_with_angle(const P& p0, const P
   return s;
 }
 
+// Aspect ratio q = 2√3·r_in / l_max from twice the area and the edge lengths:
+// r_in = 2A / perimeter, so q = 2√3 · (2A / perimeter) / l_max.
+inline double aspect_ratio_of_shape(double double_area, const std::array<double, 3>& length) {
+  const double perimeter = length[0] + length[1] + length[2];
+  const double longest = (std::max)({length[0], length[1], length[2]});
+  return longest > 0 ? 2. * std::sqrt(3.) * double_area / (perimeter * longest) : 0.;
+}
+
 } // namespace ILSA
 } // namespace internal
 
@@ -109,10 +116,7 @@ template <class P> Triangle_shape triangle_shape_with_angle(const P& p0, const P
 /// `P` is any point type with `x()`, `y()`, `z()`.
 template <class P> double triangle_aspect_ratio(const P& p0, const P& p1, const P& p2) {
   const auto s = internal::ILSA::triangle_shape(p0, p1, p2);
-  const double perimeter = s.length[0] + s.length[1] + s.length[2];
-  const double longest = (std::max)({s.length[0], s.length[1], s.length[2]});
-  // r_in = 2A / perimeter, so q = 2√3 · (2A / perimeter) / l_max.
-  return longest > 0 ? 2. * std::sqrt(3.) * s.double_area / (perimeter * longest) : 0.;
+  return internal::ILSA::aspect_ratio_of_shape(s.double_area, s.length);
 }
 
 /// \ingroup PkgPMPILSARef

@@ -95,24 +95,6 @@ struct Flat_mesh {
   Vec3 to_input(const Vec3& p) const { return center + scale * p; }
 };
 
-/// Aspect ratio of a triangle from twice its area and its squared edge
-/// lengths (opposite to its vertices 0, 1, 2): the operations of
-/// triangle_aspect_ratio() (ilsa_mesh_quality.h) in the same order, hence the
-/// same value, bit for bit (test_ilsa_smoothing checks it).
-inline double aspect_ratio_from(double double_area, const std::array<double, 3>& squared_length) {
-  const double l0 = std::sqrt(squared_length[0]), l1 = std::sqrt(squared_length[1]), l2 = std::sqrt(squared_length[2]);
-  const double perimeter = l0 + l1 + l2;
-  const double longest = (std::max)({l0, l1, l2});
-  return longest > 0 ? 2. * std::sqrt(3.) * double_area / (perimeter * longest) : 0.;
-}
-
-/// triangle_aspect_ratio(a, b, c), small enough to be inlined where the
-/// safety check computes many.
-inline double aspect_ratio(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a;
-  return aspect_ratio_from(ab.cross(c - a).norm(), {(c - b).squaredNorm(), (a - c).squaredNorm(), ab.squaredNorm()});
-}
-
 /// Twice the area vector of triangle `f` for the positions `pos`.
 inline Vec3 area_vector(const std::vector<Vec3>& pos, const std::array<Index, 3>& f) {
   return (pos[f[1]] - pos[f[0]]).cross(pos[f[2]] - pos[f[0]]);

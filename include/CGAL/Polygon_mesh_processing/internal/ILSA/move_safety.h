@@ -35,6 +35,22 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
+/// Aspect ratio of a triangle from twice its area and its squared edge
+/// lengths (opposite to its vertices 0, 1, 2): the edge vectors and lengths of
+/// triangle_aspect_ratio() in the same order, hence the same value, bit for
+/// bit (test_ilsa_smoothing checks it).
+inline double aspect_ratio_from(double double_area, const std::array<double, 3>& squared_length) {
+  return aspect_ratio_of_shape(
+      double_area, {std::sqrt(squared_length[0]), std::sqrt(squared_length[1]), std::sqrt(squared_length[2])});
+}
+
+/// triangle_aspect_ratio(a, b, c), small enough to be inlined where the
+/// safety check and the convergence stop compute many.
+inline double aspect_ratio(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a;
+  return aspect_ratio_from(ab.cross(c - a).norm(), {(c - b).squaredNorm(), (a - c).squaredNorm(), ab.squaredNorm()});
+}
+
 class Move_safety {
   using Round = Claim_stamps::Round; // rounds of the check, counted over the whole run
 
@@ -346,10 +362,15 @@ public:
     const auto& t = m_.faces[f];
     const double longest = (std::max)({(pos[t[1]] - pos[t[0]]).squaredNorm(), (pos[t[2]] - pos[t[1]]).squaredNorm(),
                                        (pos[t[0]] - pos[t[2]]).squaredNorm()});
-    return area_vector(pos, t).norm() <= collapse_tolerance * longest || longest == 0;
+    return is_collapsed(area_vector(pos, t).norm(), longest);
   }
 
 private:
+  // The collapse criterion, from twice the area and the longest edge squared.
+  static bool is_collapsed(double double_area, double longest_squared) {
+    return double_area <= collapse_tolerance * longest_squared || longest_squared == 0;
+  }
+
   // A face offends if it is collapsed now and was not before, or flipped and
   // not collapsed now and was not so before. A face collapsed before (in the
   // input: a needle, or two vertices at one point) may open again, but only
@@ -366,8 +387,8 @@ private:
     const std::array<double, 3> squared_length{(c - b).squaredNorm(), (a - c).squaredNorm(), ab.squaredNorm()};
     const double double_area = area.norm();
     quality = aspect_ratio_from(double_area, squared_length);
-    const double longest = (std::max)({squared_length[2], squared_length[0], squared_length[1]});
-    if (double_area <= collapse_tolerance * longest || longest == 0) return !collapsed(previous, f);
+    const double longest = (std::max)({squared_length[0], squared_length[1], squared_length[2]});
+    if (is_collapsed(double_area, longest)) return !collapsed(previous, f);
     return area.dot(reference(f)) <= 0 && (collapsed(previous, f) || !flipped(previous, f));
   }
 
