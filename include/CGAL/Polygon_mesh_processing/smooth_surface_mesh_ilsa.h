@@ -356,9 +356,9 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
                            fidelity_tolerance, reject_worsening, 3, face_values);
   // Read by the classification and the two constructors above only.
   ilsa::release(original.edge_faces), ilsa::release(classification.sharp_edge);
-  auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) {
+  auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home, bool guard) {
     if (!do_project) return ilsa::Projector::Result{q, home, false};
-    return projector.project(v, q, current, home);
+    return projector.project(v, q, current, home, guard);
   };
 
   double mean_edge_length = 0;
@@ -412,7 +412,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
       skipped[v] = use_safety && safety.drop_before_projection(pos, d, v);
       guarded[v] = 0;
       if (skipped[v]) return;
-      const auto r = project(v, pos[v] + d[v], pos[v], home[v]);
+      const auto r = project(v, pos[v] + d[v], pos[v], home[v], true);
       next[v] = r.point;
       next_home[v] = ilsa::Index(r.home);
       guarded[v] = r.guarded;

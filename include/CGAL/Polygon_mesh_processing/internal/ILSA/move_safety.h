@@ -120,7 +120,8 @@ public:
   /// `d`: the displacements (the unprojected position of `v` is
   /// `previous[v] + d[v]`); `next`/`next_home`: the
   /// projected positions, corrected in place. `moved` lists the vertices whose
-  /// position changed. `project` re-projects a shortened move.
+  /// position changed. `project(v, q, current, home, guard)` re-projects a shortened move (`guard` false: its
+  /// guard flag is not needed).
   ///
   /// A round runs either the cheap tests or the fidelity tests, then shortens
   /// the offending moves. Each of its phases is a loop over the vertices to
@@ -269,7 +270,7 @@ public:
         if (tries_[v] <= halvings_) {
           const double t = std::ldexp(1., -int(tries_[v]));
           const Vec3 target = previous[v] + d[v];
-          const auto r = project(v, previous[v] + t * (target - previous[v]), previous[v], previous_home[v]);
+          const auto r = project(v, previous[v] + t * (target - previous[v]), previous[v], previous_home[v], false);
           next[v] = r.point;
           next_home[v] = Index(r.home);
         } else {

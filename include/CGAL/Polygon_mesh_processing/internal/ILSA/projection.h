@@ -16,19 +16,15 @@
 // vertex is projected onto that neighbourhood instead, so it can only travel
 // across its own patch of the surface, never through space.
 //
-// Local answer (user manual, "Performance"): the guard makes the answer the
-// closest point of the faces near the home face in every case, so a smooth
-// vertex is first projected onto those faces alone (skipping the faces whose
-// bounding ball is out of reach). The AABB tree is asked for the closest point
-// only when that could differ from its own answer: when two near faces (or the
-// current position) are within a rounding margin of the closest distance
-// (the tree breaks such ties by its traversal order), when a near face is too
-// thin for the local distance to be trusted to that margin, when a face of
-// another patch around the home face is as close, or when a face touching no
-// vertex of the home face might be (each vertex's clearance, its distance to
-// the nearest face not incident to it, computed once with the tree, rules that
-// out, or else a traversal of the tree within the reach of the closest
-// distance). The result is then the one of the tree query, bit for bit.
+// Local answer (user manual, "Local projection"): the guard makes the answer
+// the closest point of the faces near the home face in every case, so a
+// smooth vertex is projected onto those faces alone (skipping the faces whose
+// bounding ball is out of reach). The AABB tree only tells whether the guard
+// kept the answer local (`Result::guarded`): whether a face outside them is
+// closer. Each vertex's clearance, its distance to the nearest face not
+// incident to it, computed once with the tree, mostly rules that out without
+// a query; otherwise a traversal of the tree within the reach of the closest
+// distance, stopping at the first face found, decides.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
@@ -147,9 +143,13 @@ public:
   }
 
   /// Closest point to `q` for vertex `v` whose current position `current` lies on `home`.
-  Result project(std::size_t v, const Vec3& q, const Vec3& current, std::size_t home) const {
-    return c_.type[v] == ILSA_vertex_type::Ridge ? project_on_crease(q, current, home)
-                                                 : project_on_surface(q, current, home);
+  /// Without `guard`, `Result::guarded` is not computed (false), which spares tree queries.
+  Result project(std::size_t v, const Vec3& q, const Vec3& current, std::size_t home, bool guard = true) const {
+    if (c_.type[v] == ILSA_vertex_type::Ridge)
+      return guard ? project_on_crease(q, current, home) : project_on_crease_near(q, current, home);
+    Result local;
+    if (project_near(q, current, home, local, guard)) return local;
+    return project_on_surface_by_tree(q, current, home);
   }
 
 private:
@@ -174,12 +174,6 @@ private:
     for (std::size_t w : m_.edges[home])
       for (const Index* e = m_.vertex_edges.first(w); e != m_.vertex_edges.last(w); ++e)
         if (c_.crease_of_edge[*e] == c_.crease_of_edge[home]) f(*e);
-  }
-
-  Result project_on_surface(const Vec3& q, const Vec3& current, std::size_t home) const {
-    Result local;
-    if (project_near(q, current, home, local)) return local;
-    return project_on_surface_by_tree(q, current, home);
   }
 
 public:
@@ -223,6 +217,25 @@ private:
       if (distance < best_distance) best = {p, g, true}, best_distance = distance;
     });
     return best;
+  }
+
+  // The closest point to `q` of the crease edges near `home` (see
+  // for_each_crease_edge_near()): the answer of project_on_crease() but for
+  // ties (at the same distance, the first edge in the order of the flat mesh
+  // wins, the home edge before the others), without its tree query.
+  Result project_on_crease_near(const Vec3& q, const Vec3& current, std::size_t home) const {
+    if (q == current) return {current, home, false};
+    double best = std::numeric_limits<double>::infinity();
+    std::size_t best_edge = npos;
+    auto measure = [&](std::size_t e) {
+      const double d = squared_distance_to_segment(q, m_.points[m_.edges[e][0]], m_.points[m_.edges[e][1]]);
+      if (d < best) best = d, best_edge = e;
+    };
+    measure(home);
+    for_each_crease_edge_near(home, measure);
+    if (best_edge == npos) return project_on_crease(q, current, home);
+    K::Construct_projected_point_3 closest;
+    return {vec(closest(segments_[segment_of(best_edge)], point(q))), best_edge, false};
   }
 
   // The faces around the vertices of face `home`, each once: f(g, near), `near`
@@ -338,49 +351,58 @@ private:
   }
 
 public:
-  /// The closest point of the faces near `home` to `q`, when it is certainly
-  /// the answer of project_on_surface_by_tree() (see the top of this file):
-  /// then `out` is set and the result is true.
-  bool project_near(const Vec3& q, const Vec3& current, std::size_t home, Result& out) const {
-    double best = std::numeric_limits<double>::infinity(), second = best, other = best;
+  /// The closest point to `q` of the faces near `home` (sharing a vertex with
+  /// it, in its patch), which the sheet guard makes the answer (see the top of
+  /// this file); `guarded` tells whether a face outside them is closer (the
+  /// AABB tree's closest point would lie on another sheet or patch; not
+  /// computed without `guard`). Among
+  /// faces at the same distance the first in the order of the flat mesh
+  /// wins, the home face before the others. False only if no near face has a
+  /// finite distance to `q`.
+  bool project_near(const Vec3& q, const Vec3& current, std::size_t home, Result& out, bool guard = true) const {
+    if (q == current) {
+      out = {current, home, false};
+      return true;
+    }
+    double best = std::numeric_limits<double>::infinity(), other = best;
     std::size_t best_face = npos;
-    bool thin = false;
     // A face whose bounding ball is farther from `q` than the reach of the
-    // best distance so far cannot change `best`, nor fail the tests below: its
+    // best distance so far can neither lower `best` nor `other` below it: its
     // distance is not computed. The home face comes first, so that the reach
-    // is short from the start; the minima do not depend on the order.
+    // is short from the start.
     double within = std::numeric_limits<double>::infinity();
     auto measure = [&](std::size_t g, bool near) {
       const auto& t = m_.faces[g];
+      if (!near) {
+        other = (std::min)(other, squared_distance_at_least(q, g));
+        return;
+      }
       const double d = squared_distance_to_triangle(q, m_.points[t[0]], m_.points[t[1]], m_.points[t[2]]);
-      if (!near)
-        other = (std::min)(other, d);
-      else if (d < best)
-        second = best, best = d, best_face = g, within = std::sqrt(best) + margin + ball_slack;
-      else if (d < second)
-        second = d;
+      if (d < best) best = d, best_face = g, within = std::sqrt(best) + ball_slack;
     };
     measure(home, true);
     for_each_face_around(home, [&](std::size_t g, bool near) {
-      thin = thin || thin_[g];
       if (g != home && ball_within(q, g, within)) measure(g, near);
     });
-    if (thin || best_face == npos) return false;
-    // No other near face, no face of another patch, not the current position
-    // within the margin; and no face that touches no vertex of `home`: the
-    // clearances of the vertices of `home` rule it out, or else a traversal
-    // of the tree that looks no farther than the reach.
-    const double reach = std::sqrt(best) + margin;
-    if (!(std::sqrt(second) > reach && std::sqrt(other) > reach && (q - current).norm() > reach)) return false;
-    double clear = -1.;
-    for (Index w : m_.faces[home]) clear = (std::max)(clear, double(clearance_[w]) - (q - m_.points[w]).norm());
-    if (!(clear > reach)) {
-      Reach_traits traits{this, q, home, reach * reach};
-      face_tree_.traversal(point(q), traits);
-      if (traits.found) return false;
+    if (best_face == npos) return false;
+    // Guarded: a face of another patch around `home`, or a face that touches
+    // no vertex of `home` (the clearances of the vertices of `home` rule it
+    // out, or else a traversal of the tree that looks no farther than the
+    // best distance), is closer. Slivers are compared by a lower bound of
+    // their distance (see squared_distance_at_least()).
+    bool guarded = guard && other < best;
+    if (guard && !guarded) {
+      const double reach = std::sqrt(best);
+      double clear = -1.;
+      for (Index w : m_.faces[home]) clear = (std::max)(clear, double(clearance_[w]) - (q - m_.points[w]).norm());
+      if (!(clear > reach)) {
+        Reach_traits traits{this, q, home, best};
+        face_tree_.traversal(point(q), traits);
+        guarded = traits.found;
+      }
     }
     K::Construct_projected_point_3 closest;
-    out = {vec(closest(Face_triangle_map{&m_}[Index(best_face)], point(q))), best_face, false};
+    out = {vec(closest(Face_triangle_map{&m_}[Index(best_face)], point(q))), best_face, guarded};
     return true;
   }
 
@@ -395,7 +417,7 @@ public:
   }
 
   /// Allowance for the rounding of the bounding-ball test (normalised units),
-  /// far above its errors (about 1e-16) and far below the margin.
+  /// far above its errors (about 1e-16) and far below any distance the smoothing depends on.
   static constexpr double ball_slack = 1e-13;
 
 private:
@@ -420,7 +442,7 @@ private:
     }
   }
 
-  // Rounding margin of the local answer, in normalised units (the bounding-box
+  // Rounding margin of the clearances, in normalised units (the bounding-box
   // diagonal is 1): far above the rounding of the distances (about 1e-16),
   // far below any distance the smoothing depends on.
   static constexpr double margin = 1e-10;
