@@ -419,7 +419,8 @@ private:
 // flag unless a face outside the near faces is exactly as close (a tie, which
 // the tree breaks by its traversal order: checked against a tree of the test's
 // own). The guard must fire on the thin shell, where the other sheet is closer
-// than an edge, and the local answer must hold without the guard flag too.
+// than an edge, and the local answer must hold without the guard flag too,
+// for ridge vertices on their crease as well.
 template <class Mesh> void test_local_projection() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
   using Tree =
@@ -485,6 +486,35 @@ template <class Mesh> void test_local_projection() {
               << guarded << " guarded, " << ties << " guard flags differing at a tie" << std::endl;
     assert(same_face > total / 2);
     if (name == "thin shell") assert(guarded > 0);
+
+    // Ridge vertices: without the guard flag (the safety check's
+    // re-projections) the closest point of the crease edges near the home
+    // edge, as close as the crease tree's answer, on an edge of the same
+    // crease sharing an end with the home edge.
+    std::size_t ridge_targets = 0;
+    for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
+      if (setup.c.type[v] != CGAL::Polygon_mesh_processing::ILSA_vertex_type::Ridge) continue;
+      const std::size_t home = projector.initial_home(v);
+      const ilsa::Vec3 x = m.points[v];
+      const double edge = (m.points[m.edges[home][0]] - m.points[m.edges[home][1]]).norm();
+      for (double scale : {0., 0.01, 0.1, 0.5, 1.5}) {
+        const ilsa::Vec3 direction(normal(rng), normal(rng), normal(rng));
+        const ilsa::Vec3 q = x + scale * edge * direction.normalized();
+        const auto by_tree = projector.project(v, q, x, home, true);
+        const auto local = projector.project(v, q, x, home, false);
+        ++ridge_targets;
+        assert(!local.guarded);
+        assert(setup.c.crease_of_edge[local.home] == setup.c.crease_of_edge[home]);
+        bool shares = false;
+        for (auto w : m.edges[local.home])
+          for (auto u : m.edges[home]) shares = shares || w == u;
+        assert(shares);
+        assert(std::abs((q - local.point).norm() - (q - by_tree.point).norm()) <= 1e-12);
+        if (local.home == by_tree.home) assert((local.point - by_tree.point).norm() <= 1e-15);
+      }
+    }
+    std::cout << "local projection, " << name << ": " << ridge_targets << " ridge targets" << std::endl;
+    if (name == "fandisk.off") assert(ridge_targets > 0);
   }
 }
 
