@@ -421,6 +421,14 @@ private:
 // own). The guard must fire on the thin shell, where the other sheet is closer
 // than an edge, and the local answer must hold without the guard flag too,
 // for ridge vertices on their crease as well.
+// Whether two index arrays (faces, edges) have an element in common.
+template <class A, class B> bool share_a_vertex(const A& a, const B& b) {
+  for (auto w : a)
+    for (auto u : b)
+      if (w == u) return true;
+  return false;
+}
+
 template <class Mesh> void test_local_projection() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
   using Tree =
@@ -462,14 +470,11 @@ template <class Mesh> void test_local_projection() {
         const auto by_tree = projector.project_on_surface_by_tree(q, x, home);
         ilsa::Projector::Result near, unguarded;
         ++total;
-        assert(projector.project_near(q, x, home, near));
-        assert(projector.project_near(q, x, home, unguarded, false));
+        assert(projector.project_near(q, home, near));
+        assert(projector.project_near(q, home, unguarded, false));
         assert(unguarded.point == near.point && unguarded.home == near.home && !unguarded.guarded);
         // On a face sharing a vertex with the home face, as close as the tree's answer.
-        bool shares = false;
-        for (auto w : m.faces[near.home])
-          for (auto u : m.faces[home]) shares = shares || w == u;
-        assert(shares);
+        assert(share_a_vertex(m.faces[near.home], m.faces[home]));
         assert(std::abs((q - near.point).norm() - (q - by_tree.point).norm()) <= 1e-12);
         if (near.home == by_tree.home) {
           ++same_face;
@@ -505,10 +510,7 @@ template <class Mesh> void test_local_projection() {
         ++ridge_targets;
         assert(!local.guarded);
         assert(setup.c.crease_of_edge[local.home] == setup.c.crease_of_edge[home]);
-        bool shares = false;
-        for (auto w : m.edges[local.home])
-          for (auto u : m.edges[home]) shares = shares || w == u;
-        assert(shares);
+        assert(share_a_vertex(m.edges[local.home], m.edges[home]));
         assert(std::abs((q - local.point).norm() - (q - by_tree.point).norm()) <= 1e-12);
         if (local.home == by_tree.home) assert((local.point - by_tree.point).norm() <= 1e-15);
       }

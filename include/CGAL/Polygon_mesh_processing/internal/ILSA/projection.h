@@ -142,13 +142,15 @@ public:
     return m_.vertex_faces.size(v) > 0 ? *m_.vertex_faces.first(v) : npos;
   }
 
-  /// Closest point to `q` for vertex `v` whose current position `current` lies on `home`.
-  /// Without `guard`, `Result::guarded` is not computed (false), which spares tree queries.
+  /// Closest point to `q` for vertex `v` whose current position `current` lies on `home`
+  /// (`current` itself when `q` is `current`). Without `guard`, `Result::guarded` is not
+  /// computed (false), which spares tree queries.
   Result project(std::size_t v, const Vec3& q, const Vec3& current, std::size_t home, bool guard = true) const {
+    if (q == current) return {current, home, false};
     if (c_.type[v] == ILSA_vertex_type::Ridge)
       return guard ? project_on_crease(q, current, home) : project_on_crease_near(q, current, home);
     Result local;
-    if (project_near(q, current, home, local, guard)) return local;
+    if (project_near(q, home, local, guard)) return local;
     return project_on_surface_by_tree(q, current, home);
   }
 
@@ -224,7 +226,6 @@ private:
   // ties (at the same distance, the first edge in the order of the flat mesh
   // wins, the home edge before the others), without its tree query.
   Result project_on_crease_near(const Vec3& q, const Vec3& current, std::size_t home) const {
-    if (q == current) return {current, home, false};
     double best = std::numeric_limits<double>::infinity();
     std::size_t best_edge = npos;
     auto measure = [&](std::size_t e) {
@@ -355,15 +356,10 @@ public:
   /// it, in its patch), which the sheet guard makes the answer (see the top of
   /// this file); `guarded` tells whether a face outside them is closer (the
   /// AABB tree's closest point would lie on another sheet or patch; not
-  /// computed without `guard`). Among
-  /// faces at the same distance the first in the order of the flat mesh
-  /// wins, the home face before the others. False only if no near face has a
-  /// finite distance to `q`.
-  bool project_near(const Vec3& q, const Vec3& current, std::size_t home, Result& out, bool guard = true) const {
-    if (q == current) {
-      out = {current, home, false};
-      return true;
-    }
+  /// computed without `guard`). Among faces at the same distance the first in
+  /// the order of the flat mesh wins, the home face before the others. False
+  /// only if no near face has a finite distance to `q`.
+  bool project_near(const Vec3& q, std::size_t home, Result& out, bool guard = true) const {
     double best = std::numeric_limits<double>::infinity(), other = best;
     std::size_t best_face = npos;
     // A face whose bounding ball is farther from `q` than the reach of the
