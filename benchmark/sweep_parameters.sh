@@ -32,14 +32,17 @@ REJECT=${REJECT:-"1"} # 1: drop moves that lower the star's mean quality (the de
 KINK=${KINK:-"default"} # "default": the library's (the feature angle); 180: the paper's rule (no kinks)
 GAIN=${GAIN:-"1e-4"} # stop once an iteration raises the mean q by less; 0: no such stop
 REMAINING=${REMAINING:-"2e-3"} # stop once an iteration's gain times the iterations left is below; 0: no such stop
+THREADS=${THREADS:-""} # threads of the tool; empty: its default (every core), 1: sequential
+RETRY=${RETRY:-"0.03"} # retry distance of moves dropped as worsening (mean edge lengths); 0: retried in the next iteration
 
-printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %7s %6s %3s %7s %6s %6s | %7s %7s %7s %7s %4s %9s %9s %6s %6s %5s %7s\n' \
-  mesh iter steps relax1 relax2 mu wl wa angle fix floor tol rej kink gain remain q_min q_mean 'q<0.3%' min_ang flip hausdorff crease fixed kinks ran time_s
+printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %7s %6s %3s %7s %6s %6s %6s | %7s %7s %7s %7s %4s %9s %9s %6s %6s %5s %7s\n' \
+  mesh iter steps relax1 relax2 mu wl wa angle fix floor tol rej kink gain remain retry q_min q_mean 'q<0.3%' min_ang flip hausdorff crease fixed kinks ran time_s
 for mesh in "${meshes[@]}"; do
 for it in $ITERATIONS; do for st in $STEPS; do for r1 in $RELAX1; do for r2 in $RELAX2; do
-for mu in $MU; do for wl in $WL; do for wa in $WA; do for an in $ANGLE; do for fx in $UNATTACHED; do for fl in $FLOOR; do for tl in $TOL; do for rj in $REJECT; do for kk in $KINK; do for gn in $GAIN; do for rg in $REMAINING; do
+for mu in $MU; do for wl in $WL; do for wa in $WA; do for an in $ANGLE; do for fx in $UNATTACHED; do for fl in $FLOOR; do for tl in $TOL; do for rj in $REJECT; do for kk in $KINK; do for gn in $GAIN; do for rg in $REMAINING; do for rt in $RETRY; do
   out=$("$tool" "$mesh" --iterations "$it" --relaxation-steps "$st" --relax1 "$r1" --relax2 "$r2" --mu "$mu" \
-        --wl "$wl" --wa "$wa" --feature-angle "$an" --fix-unattached "$fx" --fidelity-tolerance "$tl" --reject-worsening "$rj" --min-gain "$gn" --min-remaining-gain "$rg" \
+        --wl "$wl" --wa "$wa" --feature-angle "$an" --fix-unattached "$fx" --fidelity-tolerance "$tl" --reject-worsening "$rj" --min-gain "$gn" --min-remaining-gain "$rg" --retry-distance "$rt" \
+        $([ -z "$THREADS" ] || echo --threads "$THREADS") \
         $([ "$fl" = default ] || echo --quality-floor "$fl") $([ "$kk" = default ] || echo --kink-angle "$kk"))
   after=$(grep '^after' <<<"$out")
   qmin=$(sed -E 's/.*q min ([0-9.]+).*/\1/' <<<"$after")
@@ -53,8 +56,8 @@ for mu in $MU; do for wl in $WL; do for wa in $WA; do for an in $ANGLE; do for f
   crease=$(grep '^fidelity' <<<"$out" | sed -E 's/.*both ways\) max ([0-9.e+-]+) .*/\1/')
   fixed=$(grep '^vertices' <<<"$out" | sed -E 's/.* ([0-9]+) corner \(([0-9]+) crease kinks\), ([0-9]+) boundary/\1+\3/')
   kinks=$(grep '^vertices' <<<"$out" | sed -E 's/.*\(([0-9]+) crease kinks\).*/\1/')
-  printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %7s %6s %3s %7s %6s %6s | %7s %7s %7s %7s %4s %9s %9s %6s %6s %5s %7s\n' \
-    "$(basename "$mesh")" "$it" "$st" "$r1" "$r2" "$mu" "$wl" "$wa" "$an" "$fx" "$fl" "$tl" "$rj" "$kk" "$gn" "$rg" "$qmin" "$qmean" "$below" "$angle" \
+  printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %7s %6s %3s %7s %6s %6s %6s | %7s %7s %7s %7s %4s %9s %9s %6s %6s %5s %7s\n' \
+    "$(basename "$mesh")" "$it" "$st" "$r1" "$r2" "$mu" "$wl" "$wa" "$an" "$fx" "$fl" "$tl" "$rj" "$kk" "$gn" "$rg" "$rt" "$qmin" "$qmean" "$below" "$angle" \
     "$flips" "$haus" "$crease" "$((fixed))" "$kinks" "$ran" "$secs"
-done; done; done; done; done; done; done; done; done; done; done; done; done; done; done
+done; done; done; done; done; done; done; done; done; done; done; done; done; done; done; done
 done

@@ -61,6 +61,7 @@ struct Options {
   double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 20., fidelity_tolerance = 3e-4;
   double minimum_gain = 1e-4;
   double minimum_remaining_gain = 2e-3;
+  double retry_distance = 0.03;
   std::optional<double> kink_angle;    // the library's default (the feature angle) when not given
   std::optional<double> quality_floor; // the library's default when not given
   bool fix_unattached = true, project = true, safety = true, monotone = false, reject_worsening = true, verbose = false;
@@ -106,6 +107,9 @@ const char* usage =
     "  --reject-worsening 0|1  safety check: drop moves that lower the star's mean quality (default 1)\n"
     "  --fidelity-tolerance X  safety check: largest distance of the surface from an input vertex,\n"
     "                          relative to the bounding-box diagonal, > 0, inf disables (default 3e-4)\n"
+    "  --retry-distance X      a move dropped as worsening is tried again once the neighbours have\n"
+    "                          moved this far in all, relative to the mean edge length, >= 0,\n"
+    "                          0: in the next iteration (default 0.03)\n"
     "  --threads N             threads (default: all cores; 1: sequential; the result is the same)\n"
     "  --triangulate           split non-triangle faces first (CGAL triangulate_faces);\n"
     "                          without it a non-triangle face is an error\n"
@@ -157,6 +161,7 @@ Options parse(int argc, char** argv) {
       {"--min-gain", [&](const std::string& s) { o.minimum_gain = parse_number("--min-gain", s); }},
       {"--min-remaining-gain",
        [&](const std::string& s) { o.minimum_remaining_gain = parse_number("--min-remaining-gain", s); }},
+      {"--retry-distance", [&](const std::string& s) { o.retry_distance = parse_number("--retry-distance", s); }},
       {"--kink-angle", [&](const std::string& s) { o.kink_angle = parse_number("--kink-angle", s); }},
       {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
       {"--fidelity-tolerance",
@@ -237,6 +242,7 @@ std::string in_flag_terms(std::string message) {
       {"ilsa_crease_kink_angle", "--kink-angle"},
       {"ilsa_minimum_quality_gain", "--min-gain"},
       {"ilsa_minimum_remaining_gain", "--min-remaining-gain"},
+      {"ilsa_retry_distance", "--retry-distance"},
       {"ilsa_quality_floor", "--quality-floor"},
       {"ilsa_fidelity_tolerance", "--fidelity-tolerance"},
       {"number_of_relaxation_steps", "--relaxation-steps"},
@@ -315,6 +321,7 @@ auto smoothing_parameters(const Options& o, const std::function<bool(double)>& c
       .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
       .ilsa_minimum_quality_gain(o.minimum_gain)
       .ilsa_minimum_remaining_gain(o.minimum_remaining_gain)
+      .ilsa_retry_distance(o.retry_distance)
       .do_project(o.project)
       .use_safety_constraints(o.safety)
       .ilsa_quality_monotone(o.monotone)
@@ -394,7 +401,8 @@ int run(const Options& o) {
             << s.number_of_boundary_vertices << " boundary\n"
             << "moves: " << s.number_of_moves << " accepted, " << s.number_of_shortened_moves << " shortened, "
             << s.number_of_rejected_moves << " rejected by the safety check ("
-            << s.number_of_moves_dropped_before_projection << " of them before projection)\n"
+            << s.number_of_moves_dropped_before_projection << " of them before projection), "
+            << s.number_of_settled_skips << " skipped as settled\n"
             << std::setprecision(3) << "time: " << seconds << " s for " << s.number_of_iterations << " iterations ("
             << (o.threads == 1 || !tbb_available ? std::string("sequential") : std::to_string(o.threads) + " threads")
             << ")\n";

@@ -246,6 +246,9 @@ template <class Mesh> void test_invalid_parameters() {
   fails(CGAL::parameters::number_of_relaxation_steps(0), "zero relaxation steps");
   fails(CGAL::parameters::ilsa_minimum_quality_gain(-1e-4), "negative minimum gain");
   fails(CGAL::parameters::ilsa_minimum_quality_gain(std::nan("")), "NaN minimum gain");
+  fails(CGAL::parameters::ilsa_retry_distance(-1e-3), "negative retry distance");
+  fails(CGAL::parameters::ilsa_retry_distance(std::numeric_limits<double>::quiet_NaN()), "NaN retry distance");
+  fails(CGAL::parameters::ilsa_retry_distance(std::numeric_limits<double>::infinity()), "infinite retry distance");
   fails(CGAL::parameters::ilsa_minimum_remaining_gain(-1e-3), "negative minimum remaining gain");
   fails(CGAL::parameters::ilsa_minimum_remaining_gain(std::numeric_limits<double>::infinity()),
         "infinite minimum remaining gain");

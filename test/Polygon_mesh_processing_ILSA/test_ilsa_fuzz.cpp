@@ -230,6 +230,13 @@ int main() {
     if (use_edge_map) PMP::detect_sharp_edges(original, edge_angle, boost::make_assoc_property_map(constrained_edges));
     std::set<vd> in_range(range.begin(), range.end());
 
+    // The retry distance of dropped moves: the default, 0 (every dropped move
+    // tried again in the next iteration) or any from 1e-3 to 10 mean edge
+    // lengths, drawn from a generator of its own (the other draws stay as they were).
+    std::mt19937 retry_rng(104729u + unsigned(c));
+    const double retry_draw = unit(retry_rng);
+    const double retry = retry_draw < 0.4 ? 0.03 : retry_draw < 0.7 ? 0. : std::pow(10., -3 + 4 * unit(retry_rng));
+
     // A fifth of the cases stop through the callback, after the iteration that
     // reaches `stop_after` (drawn from a generator of its own, so that the
     // other draws of each case stay as they were).
@@ -260,6 +267,7 @@ int main() {
                   .ilsa_fidelity_tolerance(tolerance)
                   .ilsa_minimum_quality_gain(gain)
                   .ilsa_minimum_remaining_gain(remaining_gain)
+                  .ilsa_retry_distance(retry)
                   .do_project(project)
                   .use_safety_constraints(safety)
                   .relax_constraints(relax)
@@ -583,9 +591,9 @@ int main() {
                 << ", angle " << angle << ", fix " << fix << ", floor " << (default_floor ? -1. : floor)
                 << ", monotone " << monotone << ", reject worsening " << reject_worsening << ", kink " << kink
                 << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain " << remaining_gain
-                << ", project " << project << ", safety " << safety << ", range " << use_range << ", vertex map "
-                << use_vertex_map << ", edge map " << use_edge_map << ", relax " << relax << "): flipped "
-                << f.number_of_flipped_faces << ", collapsed edges " << collapsed_edges
+                << ", retry distance " << retry << ", project " << project << ", safety " << safety << ", range "
+                << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map << ", relax "
+                << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges " << collapsed_edges
                 << ", zero-area input faces opened reversed " << reversed << ", distance " << f.max_vertex_distance
                 << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
                 << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "

@@ -40,7 +40,8 @@ template <class Mesh, class Smooth> void compare(const Mesh& input, const Smooth
     assert(differing == 0);
     assert(p.number_of_moves == s.number_of_moves && p.number_of_rejected_moves == s.number_of_rejected_moves &&
            p.number_of_shortened_moves == s.number_of_shortened_moves &&
-           p.number_of_moves_dropped_before_projection == s.number_of_moves_dropped_before_projection);
+           p.number_of_moves_dropped_before_projection == s.number_of_moves_dropped_before_projection &&
+           p.number_of_settled_skips == s.number_of_settled_skips);
   }
 }
 

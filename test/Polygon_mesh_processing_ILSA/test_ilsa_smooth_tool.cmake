@@ -60,7 +60,8 @@ expect_failure(color_no_output "--color-by-type writes colours to a PLY file" "$
 foreach(case "mu;--mu=-1" "relax1;--relax1=0" "relax2;--relax2;2" "wl;--wl=-1" "wa;--wa;-1"
              "feature-angle;--feature-angle=190" "kink-angle;--kink-angle=-3" "quality-floor;--quality-floor=1"
              "fidelity-tolerance;--fidelity-tolerance=0" "min-gain;--min-gain=-1" "iterations;--iterations=200000"
-             "relaxation-steps;--relaxation-steps=0" "min-remaining-gain;--min-remaining-gain=-1")
+             "relaxation-steps;--relaxation-steps=0" "min-remaining-gain;--min-remaining-gain=-1"
+             "retry-distance;--retry-distance=-1")
   list(GET case 0 flag)
   list(REMOVE_AT case 0)
   expect_failure(range_${flag} "ILSA: --${flag} must be" "${DATA}/sphere_low.off" "${WORK}/range_${flag}-out.off"

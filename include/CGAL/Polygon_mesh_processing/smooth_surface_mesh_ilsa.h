@@ -202,6 +202,15 @@ namespace Polygon_mesh_processing {
  * paper: `false` restores the paper's acceptance of every move the other checks allow)}
  *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_retry_distance}
+ *     \cgalParamDescription{with the worsening test on (`ilsa_reject_worsening_moves`), a vertex whose move it
+ * dropped stays where it is, its new moves neither projected nor checked, until its neighbours have moved by this
+ * distance in all since, relative to the mean edge length of the input (user manual, "Retrying dropped moves"; not
+ * in the paper). `0` tries every dropped move again in the next iteration. The skips are
+ * `ILSA_statistics::number_of_settled_skips`}
+ *     \cgalParamType{`double`, non-negative and finite}
+ *     \cgalParamDefault{`0.03`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fidelity_tolerance}
  *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it takes the smoothed
  * surface farther than this distance from the input surface where it was not already: from the input position of the
@@ -271,6 +280,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const double minimum_gain = choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), 1e-4);
   const double minimum_remaining_gain =
       choose_parameter(get_parameter(np, internal_np::ilsa_minimum_remaining_gain), 2e-3);
+  const double retry_distance = choose_parameter(get_parameter(np, internal_np::ilsa_retry_distance), 0.03);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   const std::function<bool(double)> callback =
       choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
@@ -286,6 +296,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
           "ilsa_minimum_quality_gain must be non-negative and finite (0 disables this stop)");
   require(minimum_remaining_gain >= 0 && std::isfinite(minimum_remaining_gain),
           "ilsa_minimum_remaining_gain must be non-negative and finite (0 disables this stop)");
+  require(retry_distance >= 0 && std::isfinite(retry_distance),
+          "ilsa_retry_distance must be non-negative and finite (0 retries every dropped move at once)");
   require(double(iterations) >= 0 && double(iterations) <= 100000, "number_of_iterations must be in [0, 100000]");
   require(double(sweeps) >= 1 && double(sweeps) <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
   require(relax1 > 0 && relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
@@ -392,6 +404,17 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   };
   const bool may_stop = minimum_gain > 0 || minimum_remaining_gain > 0;
   double mean_q = may_stop ? mean_quality() : 0.;
+  // Retrying dropped moves (user manual, "Retrying dropped moves"): a vertex
+  // whose move the worsening test or its pre-test dropped is settled, left
+  // untested, until its neighbours have travelled `retry_length` in all since.
+  // `settled[v]`: the length they have travelled so far, or -1 when `v` is
+  // not settled (one float per vertex: the largest meshes are at the memory
+  // bound of the user manual's "Performance").
+  const bool limit_retries = use_safety && reject_worsening && retry_distance > 0;
+  const double retry_length = retry_distance * mean_edge_length;
+  std::vector<float> settled;
+  if (limit_retries) settled.assign(pos.size(), -1.f);
+  auto is_settled = [&](std::size_t v) { return limit_retries && settled[v] >= 0; };
 
   for (std::size_t step = 0; step < std::size_t(iterations); ++step) {
     // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices
@@ -409,7 +432,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     next_home = home;
     ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {
       const std::size_t v = neighborhoods.adjustable[i];
-      skipped[v] = use_safety && safety.drop_before_projection(pos, d, v);
+      skipped[v] = is_settled(v) || (use_safety && safety.drop_before_projection(pos, d, v));
       guarded[v] = 0;
       if (skipped[v]) return;
       const auto r = project(v, pos[v] + d[v], pos[v], home[v], true);
@@ -421,7 +444,10 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     std::size_t skipped_moves = 0;
     for (std::size_t v : neighborhoods.adjustable) {
       stats.number_of_guarded_projections += guarded[v];
-      skipped_moves += skipped[v];
+      if (is_settled(v))
+        ++stats.number_of_settled_skips;
+      else
+        skipped_moves += skipped[v];
       if (next[v] != pos[v]) moved.push_back(ilsa::Index(v));
     }
     if (use_safety) {
@@ -432,6 +458,19 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
       stats.number_of_moves += moved.size() - counts.rejected;
     } else {
       stats.number_of_moves += moved.size();
+    }
+    if (limit_retries) {
+      ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {
+        const std::size_t v = neighborhoods.adjustable[i];
+        const bool was_settled = settled[v] >= 0;
+        // The neighbours' moves of this iteration count also when it dropped
+        // the move of `v`: the test saw them.
+        if (!was_settled && !(skipped[v] || safety.dropped_as_worsening(v))) return;
+        double travelled = was_settled ? double(settled[v]) : 0.;
+        for (const ilsa::Index* w = original.vertex_neighbors.first(v); w != original.vertex_neighbors.last(v); ++w)
+          travelled += (next[*w] - pos[*w]).norm();
+        settled[v] = travelled < retry_length ? float(travelled) : -1.f;
+      });
     }
     pos.swap(next);
     home.swap(next_home);

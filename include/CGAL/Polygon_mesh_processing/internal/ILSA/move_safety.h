@@ -110,6 +110,7 @@ public:
     dropped_in_.assign(m_.number_of_vertices(), 0);
     checked_.assign(m_.number_of_vertices(), 0);
     is_moved_.assign(m_.number_of_vertices(), 0);
+    worsening_.assign(m_.number_of_vertices(), 0);
   }
 
   struct Counts {
@@ -135,7 +136,7 @@ public:
                  const std::vector<Index>& moved, std::vector<Vec3>& next, std::vector<Index>& next_home,
                  const Project& project) {
     for (std::size_t v : moved) {
-      tries_[v] = 0, is_moved_[v] = 1;
+      tries_[v] = 0, is_moved_[v] = 1, worsening_[v] = 0;
       travel_[v] = added_up(travel_[v], (next[v] - previous[v]).norm());
     }
     // A round either shortens a move or is followed by a round that does or
@@ -213,7 +214,7 @@ public:
           else if (reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
             // Dropped at once: a shorter step along a worsening direction rarely
             // helps, and each halving costs a re-projection.
-            bad_[v] = 1;
+            bad_[v] = 1, worsening_[v] = 1;
             tries_[v] = static_cast<unsigned char>(halvings_);
           }
         });
@@ -341,6 +342,10 @@ public:
                v, [&](std::size_t w) -> Vec3 { return w == v ? pos[v] : Vec3(pos[w] + d[w]); })
                .mean;
   }
+
+  /// Whether the last call of enforce() dropped the move of `v` by the
+  /// worsening test (such a move is dropped at once, without halvings).
+  bool dropped_as_worsening(std::size_t v) const { return call_ != 0 && dropped_in_[v] == call_ && worsening_[v]; }
 
   /// Orientation of face `f` at positions `pos` against the original surface.
   bool flipped(const std::vector<Vec3>& pos, std::size_t f) const {
@@ -657,6 +662,8 @@ private:
                                                    // (at least: each step is added rounded up)
   std::vector<std::array<float, 3>> face_travel_;  // travel_ of the face's vertices then
   std::vector<unsigned char> is_moved_;
+  std::vector<unsigned char> worsening_;  // per vertex: the worsening test dropped its move in the last call
+                                          // that checked it
   std::vector<std::uint32_t> dropped_in_; // per vertex: the last call of enforce() that dropped its move
   Round round_ = 0;
   std::uint32_t call_ = 0; // calls of enforce() so far
