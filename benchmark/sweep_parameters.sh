@@ -18,9 +18,9 @@ meshes=("$@")
 [ ${#meshes[@]} -gt 0 ] || meshes=("$here"/data/meshes/*.off "$here"/data/meshes/*.ply)
 
 ITERATIONS=${ITERATIONS:-"20"}
-STEPS=${STEPS:-"3"}
+STEPS=${STEPS:-"2"}
 RELAX1=${RELAX1:-"0.5"}
-RELAX2=${RELAX2:-"0.5"}
+RELAX2=${RELAX2:-"0.8"}
 MU=${MU:-"1"}
 WL=${WL:-"1"}
 WA=${WA:-"0.1"}

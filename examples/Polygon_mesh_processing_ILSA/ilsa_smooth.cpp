@@ -57,8 +57,8 @@ namespace {
 struct Options {
   std::string input = ilsa_data_file("horse.ply");
   std::string output;
-  unsigned int iterations = 20, relaxation_steps = 3;
-  double relax1 = 0.5, relax2 = 0.5, mu = 1., wl = 1., wa = 0.1, feature_angle = 20., fidelity_tolerance = 3e-4;
+  unsigned int iterations = 20, relaxation_steps = 2;
+  double relax1 = 0.5, relax2 = 0.8, mu = 1., wl = 1., wa = 0.1, feature_angle = 20., fidelity_tolerance = 3e-4;
   double minimum_gain = 1e-4;
   double minimum_remaining_gain = 2e-3;
   double retry_distance = 0.03;
@@ -89,9 +89,9 @@ const char* usage =
     "  --min-remaining-gain X  stop once an iteration's gain of mean q times the iterations\n"
     "                          left is below X, >= 0, 0 disables this stop (default 2e-3);\n"
     "                          with both stops disabled every iteration runs\n"
-    "  --relaxation-steps N    sweeps per iteration (default 3)\n"
+    "  --relaxation-steps N    sweeps per iteration (default 2)\n"
     "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
-    "  --relax2 X              penalty relaxation, (0,1] (default 0.5)\n"
+    "  --relax2 X              penalty relaxation, (0,1] (default 0.8)\n"
     "  --mu X                  penalty parameter, > 0 (default 1)\n"
     "  --wl X                  length weight, >= 0 (default 1)\n"
     "  --wa X                  area weight, >= 0 (default 0.1)\n"

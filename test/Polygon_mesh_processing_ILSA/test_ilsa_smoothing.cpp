@@ -275,12 +275,23 @@ template <class Mesh> void test_named_parameter_chaining() {
     return std::make_pair(points_of(m), s.number_of_iterations);
   };
   namespace params = CGAL::parameters;
-  const auto a =
-      run(params::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_minimum_remaining_gain(0.).ilsa_relaxation(0.3));
-  const auto b =
-      run(params::ilsa_minimum_remaining_gain(0.).ilsa_relaxation(0.3).ilsa_penalty_mu(5.).number_of_iterations(4));
-  const auto default_mu = run(params::number_of_iterations(4).ilsa_relaxation(0.3).ilsa_minimum_remaining_gain(0.));
-  const auto default_relax = run(params::ilsa_penalty_mu(5.).number_of_iterations(4).ilsa_minimum_remaining_gain(0.));
+  // Both stops disabled, so that every run but the last makes 4 iterations.
+  const auto a = run(params::number_of_iterations(4)
+                         .ilsa_minimum_quality_gain(0.)
+                         .ilsa_penalty_mu(5.)
+                         .ilsa_minimum_remaining_gain(0.)
+                         .ilsa_relaxation(0.3));
+  const auto b = run(params::ilsa_minimum_remaining_gain(0.)
+                         .ilsa_relaxation(0.3)
+                         .ilsa_penalty_mu(5.)
+                         .number_of_iterations(4)
+                         .ilsa_minimum_quality_gain(0.));
+  const auto default_mu = run(
+      params::number_of_iterations(4).ilsa_relaxation(0.3).ilsa_minimum_remaining_gain(0.).ilsa_minimum_quality_gain(
+          0.));
+  const auto default_relax =
+      run(params::ilsa_penalty_mu(5.).ilsa_minimum_quality_gain(0.).number_of_iterations(4).ilsa_minimum_remaining_gain(
+          0.));
   const auto default_stop = run(params::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_relaxation(0.3));
   assert(a.second == 4 && b.second == 4 && default_stop.second < 4);
   assert(max_difference(a.first, b.first) == 0);
@@ -289,6 +300,7 @@ template <class Mesh> void test_named_parameter_chaining() {
   // Every ILSA tag changes the result.
   const auto c = run(CGAL::parameters::number_of_iterations(4)
                          .ilsa_minimum_remaining_gain(0.)
+                         .ilsa_minimum_quality_gain(0.)
                          .ilsa_penalty_mu(5.)
                          .ilsa_relaxation(0.3)
                          .ilsa_penalty_relaxation(0.9)

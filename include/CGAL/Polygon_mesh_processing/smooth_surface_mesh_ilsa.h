@@ -110,17 +110,19 @@ namespace Polygon_mesh_processing {
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_relaxation_steps}
  *     \cgalParamDescription{the number of sweeps of the ILSA and of the penalty step in each iteration
- * (max_smooth_iter_num); the sweeps stop early once no displacement changes by more than 1e-4 of the mean edge length}
+ * (max_smooth_iter_num); the sweeps stop early once no displacement changes by more than 1e-4 of the mean edge length.
+ * The default goes with the default of `ilsa_penalty_relaxation` (user manual, "Sweeps per Iteration")}
  *     \cgalParamType{unsigned int, 1 to 10000}
- *     \cgalParamDefault{`3`}
+ *     \cgalParamDefault{`2`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_relaxation}
  *     \cgalParamDescription{the ILSA relaxation factor relax1 (share of the neighbours' weighted mean displacement
  * taken in each sweep)} \cgalParamType{`double`, in (0, 1]} \cgalParamDefault{`0.5`} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_penalty_relaxation}
- *     \cgalParamDescription{the relaxation factor relax2 of the penalty step}
+ *     \cgalParamDescription{the relaxation factor relax2 of the penalty step (share of the penalty minimiser taken in
+ * each sweep)}
  *     \cgalParamType{`double`, in (0, 1]}
- *     \cgalParamDefault{`0.5`}
+ *     \cgalParamDefault{`0.8`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_penalty_mu}
  *     \cgalParamDescription{the penalty parameter μ: the smaller, the more the penalty step keeps a vertex on the plane
@@ -261,10 +263,10 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   using Point = typename boost::property_traits<VPM>::value_type;
   VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tm));
   const auto iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20);
-  const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), 3);
+  const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), 2);
   const double relax1 = choose_parameter(get_parameter(np, internal_np::ilsa_relaxation), 0.5);
   ilsa::Penalty_parameters penalty;
-  penalty.relax2 = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), 0.5);
+  penalty.relax2 = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), 0.8);
   penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), 1.);
   penalty.length_weight = choose_parameter(get_parameter(np, internal_np::ilsa_length_weight), 1.);
   penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), 0.1);

@@ -27,11 +27,11 @@ namespace internal {
 namespace ILSA {
 
 struct Penalty_parameters {
-  double relax2 = 0.5;       // ilsa_penalty_relaxation
+  double relax2 = 0.8;       // ilsa_penalty_relaxation
   double mu = 0.1;           // ilsa_penalty_mu
   double length_weight = 1.; // wl
   double area_weight = 1.;   // wa
-  std::size_t sweeps = 3;    // number_of_relaxation_steps
+  std::size_t sweeps = 2;    // number_of_relaxation_steps
   double tolerance = 0;      // stop once no displacement changes by more
 };
 
