@@ -429,7 +429,6 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
 
     // p(v): projection of v + d(v) onto T_ori (user manual, "Projection guard"), then the safety check; a
     // move the check dropped in the previous iteration is first tried without projection (its pre-test).
-    if (use_safety) safety.template prepare_pretest<ConcurrencyTag>(pos, d);
     next = pos;
     next_home = home;
     ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {

@@ -67,9 +67,8 @@ public:
   /// `reject_worsening`: drop a move that lowers the mean aspect ratio of the
   /// vertex's star, the neighbours being at their new positions.
   /// `projector`: its bounding balls of the input faces spare distances.
-  /// `face_scratch`: a per-face array the check works in during enforce() and
-  /// from prepare_pretest() to the next enforce(); the caller may use it
-  /// between the end of enforce() and prepare_pretest() (one array less).
+  /// `face_scratch`: a per-face array the check works in during enforce();
+  /// the caller may use it between two calls (one array less).
   Move_safety(const Flat_mesh& original, const Vertex_classification& classification, const Projector& projector,
               double quality_floor, double fidelity_tolerance, bool reject_worsening, std::size_t halvings,
               std::vector<double>& face_scratch)
@@ -315,32 +314,20 @@ public:
     return counts;
   }
 
-  /// The worsening pre-test (user manual, "Worsening pre-test"), before projection,
-  /// at the unprojected positions `pos[v] + d[v]` of all vertices (`d` is zero
-  /// for a fixed one). Afterwards drop_before_projection() may be asked about any vertex.
-  template <class ConcurrencyTag> void prepare_pretest(const std::vector<Vec3>& pos, const std::vector<Vec3>& d) {
-    if (!reject_worsening_ || call_ == 0) return;
-    // quality_now_ is free between two calls of enforce(): a call only reads
-    // the values it computed itself (see `current` there).
-    parallel_for<ConcurrencyTag>(m_.number_of_faces(), [&](std::size_t f) {
-      const auto& t = m_.faces[f];
-      const Vec3 a = pos[t[0]] + d[t[0]], b = pos[t[1]] + d[t[1]], c = pos[t[2]] + d[t[2]];
-      quality_now_[f] = aspect_ratio(a, b, c);
-    });
-  }
-
   /// Whether to drop the move of `v` to `pos[v] + d[v]` without projecting and
   /// checking it: its move was dropped in the previous iteration, and the
   /// mean aspect ratio of its star, every vertex at its target, is lower than
-  /// with `v` staying at `pos[v]`. Every move made still passes enforce(),
-  /// so the test can cost quality, never a guarantee.
+  /// with `v` staying at `pos[v]` (`d` is zero for a fixed vertex). Every
+  /// move made still passes enforce(), so the test can cost quality, never a
+  /// guarantee (user manual, "Worsening pre-test"). The aspect ratios are
+  /// computed here, for the few vertices the gate lets through, not for
+  /// every face.
   bool drop_before_projection(const std::vector<Vec3>& pos, const std::vector<Vec3>& d, std::size_t v) const {
     if (!reject_worsening_ || call_ == 0 || dropped_in_[v] != call_) return false;
     // The worsening test of enforce(), with the targets for `next` and `pos[v]` for `previous[v]`.
-    return star_quality_now(v).mean <
-           star_quality_at(
-               v, [&](std::size_t w) -> Vec3 { return w == v ? pos[v] : Vec3(pos[w] + d[w]); })
-               .mean;
+    auto target = [&](std::size_t w) -> Vec3 { return pos[w] + d[w]; };
+    auto staying = [&](std::size_t w) -> Vec3 { return w == v ? pos[v] : target(w); };
+    return star_quality_at(v, target).mean < star_quality_at(v, staying).mean;
   }
 
   /// Whether the last call of enforce() dropped the move of `v` by the
@@ -644,8 +631,8 @@ private:
   std::vector<Index> degenerate_faces_;            // faces degenerate in the input, in increasing order
   std::vector<Vec3> degenerate_references_;        // their reference orientations
   std::vector<unsigned char> offends_;             // per face, in the current round
-  std::vector<double>& quality_now_;               // per face: its aspect ratio at `next`, likewise (at the
-                                                   // targets from prepare_pretest() to enforce()); the caller's
+  std::vector<double>& quality_now_;               // per face: its aspect ratio at `next`, likewise; the
+                                                   // caller's
   std::vector<unsigned char> bad_;                 // per vertex: its move offends, in the current round
   std::vector<unsigned char> tries_;               // halvings applied to a vertex's move (at most halvings_ + 1)
   std::vector<unsigned char> checked_;             // per vertex: already in the next list to check
