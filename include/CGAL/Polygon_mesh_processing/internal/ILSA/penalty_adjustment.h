@@ -26,11 +26,12 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
+// The package's defaults; smooth_surface_mesh_ilsa() sets every member from its named parameters.
 struct Penalty_parameters {
   double relax2 = 0.8;       // ilsa_penalty_relaxation
-  double mu = 0.1;           // ilsa_penalty_mu
+  double mu = 1.;            // ilsa_penalty_mu
   double length_weight = 1.; // wl
-  double area_weight = 1.;   // wa
+  double area_weight = 0.1;  // wa
   std::size_t sweeps = 2;    // number_of_relaxation_steps
   double tolerance = 0;      // stop once no displacement changes by more
 };
