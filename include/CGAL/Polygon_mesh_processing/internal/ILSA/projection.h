@@ -340,10 +340,15 @@ private:
     parallel_for<ConcurrencyTag>(m_.number_of_vertices(), [&](std::size_t w) {
       if (m_.vertex_faces.size(w) == 0) return;
       Clearance_traits traits{this, Index(w), std::numeric_limits<double>::infinity()};
-      // A first bound from the faces around the neighbours, so that the traversal prunes from the start.
+      // A first bound, so that the traversal prunes from the start: the
+      // distance to a neighbour that lies on a face not incident to `w` (at
+      // least the value of that face; the traversal finds the smallest value).
       for (const Index* u = m_.vertex_neighbors.first(w); u != m_.vertex_neighbors.last(w); ++u)
         for (const Index* g = m_.vertex_faces.first(*u); g != m_.vertex_faces.last(*u); ++g)
-          if (!incident(*g, w)) traits.best = (std::min)(traits.best, squared_distance_at_least(m_.points[w], *g));
+          if (!incident(*g, w)) {
+            traits.best = (std::min)(traits.best, (m_.points[*u] - m_.points[w]).squaredNorm());
+            break;
+          }
       face_tree_.traversal_with_priority(point(m_.points[w]), traits);
       // Stored as a float rounded down: a smaller clearance only sends more
       // queries to the tree, whose answer is the same.
