@@ -63,9 +63,10 @@ inline Vec3 unit_vertex_normal(const Flat_mesh& m, const std::vector<Vec3>& pos,
 /// (this solve runs for every smooth vertex in every sweep; a Cholesky
 /// factorisation takes three square roots and nine divisions in a chain).
 /// The caller bounds the condition number of `H` (see
-/// minimize_penalty_function()), so that the error is that of Cholesky's, a
-/// few times the condition number times the rounding unit. Returns false when
-/// the determinant is not positive and finite.
+/// minimize_penalty_function()), so that the error is, like Cholesky's, a
+/// small multiple of the condition number times the rounding unit
+/// (test_ilsa_smoothing compares the two). Returns false when the determinant
+/// is not positive and finite.
 inline bool solve_by_cofactors(const Eigen::Matrix3d& H, const Vec3& r, Vec3& x) {
   const double a = H(0, 0), b = H(1, 0), c = H(2, 0), e = H(1, 1), f = H(2, 1), g = H(2, 2);
   // The cofactors (adj(H) is symmetric).
@@ -117,8 +118,8 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 
   // Every term is positive semi-definite and the length term adds 2 wl I, so H
   // is positive definite with condition number at most trace(H) / (2 wl):
-  // below 1e8, the cofactors solve it as accurately as the SVD, at a small
-  // fraction of its cost.
+  // below 1e8, its cofactors solve it about as accurately as Cholesky (see
+  // solve_by_cofactors()), at a small fraction of the SVD's cost.
   Vec3 x;
   if (2. * p.length_weight >= 1e-8 * H.trace() && solve_by_cofactors(H, r, x)) return x;
   H(0, 1) = H(1, 0), H(0, 2) = H(2, 0), H(1, 2) = H(2, 1); // the SVD reads the whole matrix

@@ -341,8 +341,8 @@ private:
       if (m_.vertex_faces.size(w) == 0) return;
       Clearance_traits traits{this, Index(w), std::numeric_limits<double>::infinity()};
       // A first bound, so that the traversal prunes from the start: the
-      // distance to a neighbour that lies on a face not incident to `w` (at
-      // least the value of that face; the traversal finds the smallest value).
+      // distance to a neighbour that lies on a face not incident to `w`, no
+      // less than that face's value (the traversal finds the smallest value).
       for (const Index* u = m_.vertex_neighbors.first(w); u != m_.vertex_neighbors.last(w); ++u)
         for (const Index* g = m_.vertex_faces.first(*u); g != m_.vertex_faces.last(*u); ++g)
           if (!incident(*g, w)) {
