@@ -72,8 +72,9 @@ struct ILSA_statistics {
   /// those of them dropped by its worsening pre-test, before projection (user manual, "Worsening pre-test")
   std::size_t number_of_moves_dropped_before_projection = 0;
   std::size_t number_of_guarded_projections = 0; ///< projections the sheet guard kept local
-  /// iterations in which a vertex whose move the worsening test dropped was left where it was, untested, its
-  /// neighbours having moved too little since (user manual, "Retrying dropped moves"); neither moves nor rejected moves
+  /// iterations in which a vertex whose move the worsening test dropped (or the quality floor, in a star already below
+  /// it) was left where it was, untested, its neighbours having moved too little since (user manual, "Retrying
+  /// dropped moves"); neither moves nor rejected moves
   std::size_t number_of_settled_skips = 0;
 };
 

@@ -205,8 +205,9 @@ namespace Polygon_mesh_processing {
  *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_retry_distance}
- *     \cgalParamDescription{with the worsening test on (`ilsa_reject_worsening_moves`), a vertex whose move it
- * dropped stays where it is, its new moves neither projected nor checked, until its neighbours have moved by this
+ *     \cgalParamDescription{with the safety check on, a vertex whose move the worsening test
+ * (`ilsa_reject_worsening_moves`) dropped, or the quality floor in a star whose worst aspect ratio was already below
+ * it, stays where it is, its new moves neither projected nor checked, until its neighbours have moved by this
  * distance in all since, relative to the mean edge length of the input (user manual, "Retrying dropped moves"; not
  * in the paper). `0` tries every dropped move again in the next iteration. The skips are
  * `ILSA_statistics::number_of_settled_skips`}
@@ -407,12 +408,14 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const bool may_stop = minimum_gain > 0 || minimum_remaining_gain > 0;
   double mean_q = may_stop ? mean_quality() : 0.;
   // Retrying dropped moves (user manual, "Retrying dropped moves"): a vertex
-  // whose move the worsening test or its pre-test dropped is settled, left
-  // untested, until its neighbours have travelled `retry_length` in all since.
+  // whose move the worsening test or its pre-test dropped, or the quality
+  // floor in a star already below it, is settled, left untested, until its
+  // neighbours have travelled `retry_length` in all since.
   // `settled[v]`: the length they have travelled so far, or -1 when `v` is
   // not settled (one float per vertex: the largest meshes are at the memory
   // bound of the user manual's "Performance").
-  const bool limit_retries = use_safety && reject_worsening && retry_distance > 0;
+  const bool limit_retries =
+      use_safety && (reject_worsening || quality_monotone || quality_floor > 0) && retry_distance > 0;
   const double retry_length = retry_distance * mean_edge_length;
   std::vector<float> settled;
   if (limit_retries) settled.assign(pos.size(), -1.f);
@@ -466,7 +469,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
         const bool was_settled = settled[v] >= 0;
         // The neighbours' moves of this iteration count also when it dropped
         // the move of `v`: the test saw them.
-        if (!was_settled && !(skipped[v] || safety.dropped_as_worsening(v))) return;
+        if (!was_settled && !(skipped[v] || safety.dropped_to_settle(v))) return;
         double travelled = was_settled ? double(settled[v]) : 0.;
         for (const ilsa::Index* w = original.vertex_neighbors.first(v); w != original.vertex_neighbors.last(v); ++w)
           travelled += (next[*w] - pos[*w]).norm();
