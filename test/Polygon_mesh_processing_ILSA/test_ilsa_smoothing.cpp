@@ -830,11 +830,13 @@ template <class Mesh> void test_worsening_pretest() {
 }
 
 // Retrying dropped moves (user manual, "Retrying dropped moves"): a vertex
-// whose move the worsening test dropped, or the quality floor in a star already
-// below it, is skipped until its neighbours have moved; never in the first
-// iteration, never with ilsa_retry_distance(0) or without both tests; the floor
-// alone settles vertices on the fandisk (its input has stars below the floor
-// of 0.5); on the fandisk the skips cost less than 0.001 of mean q.
+// whose move the safety check dropped is skipped until its neighbours have
+// moved, also without the worsening test; never in the first iteration, never
+// with ilsa_retry_distance(0) or without the check; on the fandisk the skips
+// cost less than 0.001 of mean q. A drop by the quality floor in a star that
+// was at or above the floor does not settle: on the hemisphere, whose default
+// floor is its input's minimum, every star is, and without the worsening test
+// and the fidelity bound the floor (and the rare flip) is all that drops moves.
 template <class Mesh> void test_retry_distance() {
   const Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
   auto run = [&](const auto& np, double* mean = nullptr) {
@@ -859,12 +861,25 @@ template <class Mesh> void test_retry_distance() {
       run(CGAL::parameters::ilsa_retry_distance(1e-3).number_of_iterations(6).ilsa_minimum_quality_gain(0.));
   assert(far.number_of_settled_skips > near.number_of_settled_skips);
   assert(run(CGAL::parameters::number_of_iterations(1)).number_of_settled_skips == 0);
-  assert(run(CGAL::parameters::ilsa_reject_worsening_moves(false).ilsa_quality_floor(0.).number_of_iterations(4))
-             .number_of_settled_skips == 0);
   assert(run(CGAL::parameters::ilsa_reject_worsening_moves(false).number_of_iterations(4)).number_of_settled_skips > 0);
   assert(run(CGAL::parameters::ilsa_reject_worsening_moves(false).ilsa_retry_distance(0.).number_of_iterations(4))
              .number_of_settled_skips == 0);
   assert(run(CGAL::parameters::use_safety_constraints(false).number_of_iterations(4)).number_of_settled_skips == 0);
+
+  Mesh hemisphere = read_mesh<Mesh>(data_file("hemisphere.off"));
+  const auto at_floor = PMP::smooth_surface_mesh_ilsa(
+      hemisphere, CGAL::parameters::ilsa_reject_worsening_moves(false).ilsa_fidelity_tolerance(
+                      std::numeric_limits<double>::infinity()));
+  std::cout << "hemisphere at its floor: " << at_floor.number_of_rejected_moves << " rejected, "
+            << at_floor.number_of_settled_skips << " settled skips" << std::endl;
+  assert(at_floor.number_of_rejected_moves > 0 && at_floor.number_of_settled_skips == 0);
+  // With the fidelity bound its drops settle vertices.
+  hemisphere = read_mesh<Mesh>(data_file("hemisphere.off"));
+  const auto bounded =
+      PMP::smooth_surface_mesh_ilsa(hemisphere, CGAL::parameters::ilsa_reject_worsening_moves(false));
+  std::cout << "hemisphere with the fidelity bound: " << bounded.number_of_settled_skips << " settled skips"
+            << std::endl;
+  assert(bounded.number_of_settled_skips > 0);
 }
 
 // The stops (user manual, "Stopping early"): the run ends after the first

@@ -72,7 +72,7 @@ struct ILSA_statistics {
   /// those of them dropped by its worsening pre-test, before projection (user manual, "Worsening pre-test")
   std::size_t number_of_moves_dropped_before_projection = 0;
   std::size_t number_of_guarded_projections = 0; ///< projections the sheet guard kept local
-  /// iterations in which a vertex whose move the worsening test dropped (or the quality floor, in a star already below
+  /// iterations in which a vertex whose move the safety check dropped (but for the quality floor in a star at or above
   /// it) was left where it was, untested, its neighbours having moved too little since (user manual, "Retrying
   /// dropped moves"); neither moves nor rejected moves
   std::size_t number_of_settled_skips = 0;

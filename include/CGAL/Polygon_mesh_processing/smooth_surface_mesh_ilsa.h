@@ -205,11 +205,10 @@ namespace Polygon_mesh_processing {
  *     \cgalParamType{`bool`} \cgalParamDefault{`true`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_retry_distance}
- *     \cgalParamDescription{with the safety check on, a vertex whose move the worsening test
- * (`ilsa_reject_worsening_moves`) dropped, or the quality floor in a star whose worst aspect ratio was already below
- * it, stays where it is, its new moves neither projected nor checked, until its neighbours have moved by this
- * distance in all since, relative to the mean edge length of the input (user manual, "Retrying dropped moves"; not
- * in the paper). `0` tries every dropped move again in the next iteration. The skips are
+ *     \cgalParamDescription{with the safety check on, a vertex whose move it dropped (but for the quality floor
+ * in a star whose worst aspect ratio was at or above the floor) stays where it is, its new moves neither projected
+ * nor checked, until its neighbours have moved by this distance in all since, relative to the mean edge length of
+ * the input (user manual, "Retrying dropped moves"; not in the paper). `0` tries every dropped move again in the next iteration. The skips are
  * `ILSA_statistics::number_of_settled_skips`}
  *     \cgalParamType{`double`, non-negative and finite}
  *     \cgalParamDefault{`0.03`}
@@ -408,14 +407,13 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   const bool may_stop = minimum_gain > 0 || minimum_remaining_gain > 0;
   double mean_q = may_stop ? mean_quality() : 0.;
   // Retrying dropped moves (user manual, "Retrying dropped moves"): a vertex
-  // whose move the worsening test or its pre-test dropped, or the quality
-  // floor in a star already below it, is settled, left untested, until its
-  // neighbours have travelled `retry_length` in all since.
+  // whose move the safety check or the worsening pre-test dropped (but for
+  // the quality floor in a star that was at or above it) is settled, left
+  // untested, until its neighbours have travelled `retry_length` in all since.
   // `settled[v]`: the length they have travelled so far, or -1 when `v` is
   // not settled (one float per vertex: the largest meshes are at the memory
   // bound of the user manual's "Performance").
-  const bool limit_retries =
-      use_safety && (reject_worsening || quality_monotone || quality_floor > 0) && retry_distance > 0;
+  const bool limit_retries = use_safety && retry_distance > 0;
   const double retry_length = retry_distance * mean_edge_length;
   std::vector<float> settled;
   if (limit_retries) settled.assign(pos.size(), -1.f);

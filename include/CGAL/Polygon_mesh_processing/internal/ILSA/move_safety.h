@@ -109,7 +109,7 @@ public:
     dropped_in_.assign(m_.number_of_vertices(), 0);
     checked_.assign(m_.number_of_vertices(), 0);
     is_moved_.assign(m_.number_of_vertices(), 0);
-    settles_.assign(m_.number_of_vertices(), 0);
+    above_floor_.assign(m_.number_of_vertices(), 0);
   }
 
   struct Counts {
@@ -135,7 +135,7 @@ public:
                  const std::vector<Index>& moved, std::vector<Vec3>& next, std::vector<Index>& next_home,
                  const Project& project) {
     for (std::size_t v : moved) {
-      tries_[v] = 0, is_moved_[v] = 1, settles_[v] = 0;
+      tries_[v] = 0, is_moved_[v] = 1, above_floor_[v] = 0;
       travel_[v] = added_up(travel_[v], (next[v] - previous[v]).norm());
     }
     // A round either shortens a move or is followed by a round that does or
@@ -200,7 +200,7 @@ public:
         // vertex of an offending face is; then the quality tests.
         parallel_for<ConcurrencyTag>(checking.size(), [&](std::size_t i) {
           const std::size_t v = checking[i];
-          bad_[v] = 0, settles_[v] = 0;
+          bad_[v] = 0, above_floor_[v] = 0;
           for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
             if (offends_[*f]) bad_[v] = 1;
           if (bad_[v]) return;
@@ -210,16 +210,17 @@ public:
           if (quality_floor_ > 0 && now.worst < quality_floor_) {
             const double before = star_quality(previous, v, previous[v]).worst;
             if (now.worst < before) {
-              // A star already below the floor: if the halvings fail too, the
-              // drop settles the vertex (user manual, "Retrying dropped moves").
-              bad_[v] = 1, settles_[v] = before < quality_floor_;
+              // A star at or above the floor before the move: if the halvings
+              // fail too, the drop does not settle the vertex (user manual,
+              // "Retrying dropped moves").
+              bad_[v] = 1, above_floor_[v] = !(before < quality_floor_);
               return;
             }
           }
           if (reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
             // Dropped at once: a shorter step along a worsening direction rarely
             // helps, and each halving costs a re-projection.
-            bad_[v] = 1, settles_[v] = 1;
+            bad_[v] = 1;
             tries_[v] = static_cast<unsigned char>(halvings_);
           }
         });
@@ -263,7 +264,7 @@ public:
         parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
           const std::size_t v = to_measure[i];
           bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
-          settles_[v] = 0;
+          above_floor_[v] = 0;
         });
       }
       offenders.clear();
@@ -337,11 +338,12 @@ public:
     return star_quality_at(v, target).mean < star_quality_at(v, staying).mean;
   }
 
-  /// Whether the last call of enforce() dropped the move of `v` by a test
-  /// whose drop settles the vertex (user manual, "Retrying dropped moves"):
-  /// the worsening test (such a move is dropped at once, without halvings),
-  /// or the quality floor in a star already below it, the halvings failing too.
-  bool dropped_to_settle(std::size_t v) const { return call_ != 0 && dropped_in_[v] == call_ && settles_[v]; }
+  /// Whether the last call of enforce() dropped the move of `v` in a way that
+  /// settles the vertex (user manual, "Retrying dropped moves"): by any test
+  /// but the quality floor in a star that was at or above the floor.
+  bool dropped_to_settle(std::size_t v) const {
+    return call_ != 0 && dropped_in_[v] == call_ && !above_floor_[v];
+  }
 
   /// Orientation of face `f` at positions `pos` against the original surface.
   bool flipped(const std::vector<Vec3>& pos, std::size_t f) const {
@@ -658,8 +660,8 @@ private:
                                                    // (at least: each step is added rounded up)
   std::vector<std::array<float, 3>> face_travel_;  // travel_ of the face's vertices then
   std::vector<unsigned char> is_moved_;
-  std::vector<unsigned char> settles_;    // per vertex: its move's last failure in the last call that checked
-                                          // it settles it if the move is dropped (see dropped_to_settle())
+  std::vector<unsigned char> above_floor_; // per vertex: its move last failed, in the last call that checked it,
+                                           // the quality floor in a star at or above the floor
   std::vector<std::uint32_t> dropped_in_; // per vertex: the last call of enforce() that dropped its move
   Round round_ = 0;
   std::uint32_t call_ = 0; // calls of enforce() so far
