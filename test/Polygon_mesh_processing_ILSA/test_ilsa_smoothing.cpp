@@ -875,8 +875,7 @@ template <class Mesh> void test_retry_distance() {
   assert(at_floor.number_of_rejected_moves > 0 && at_floor.number_of_settled_skips == 0);
   // With the fidelity bound its drops settle vertices.
   hemisphere = read_mesh<Mesh>(data_file("hemisphere.off"));
-  const auto bounded =
-      PMP::smooth_surface_mesh_ilsa(hemisphere, CGAL::parameters::ilsa_reject_worsening_moves(false));
+  const auto bounded = PMP::smooth_surface_mesh_ilsa(hemisphere, CGAL::parameters::ilsa_reject_worsening_moves(false));
   std::cout << "hemisphere with the fidelity bound: " << bounded.number_of_settled_skips << " settled skips"
             << std::endl;
   assert(bounded.number_of_settled_skips > 0);

@@ -208,8 +208,8 @@ namespace Polygon_mesh_processing {
  *     \cgalParamDescription{with the safety check on, a vertex whose move it dropped (but for the quality floor
  * in a star whose worst aspect ratio was at or above the floor) stays where it is, its new moves neither projected
  * nor checked, until its neighbours have moved by this distance in all since, relative to the mean edge length of
- * the input (user manual, "Retrying dropped moves"; not in the paper). `0` tries every dropped move again in the next iteration. The skips are
- * `ILSA_statistics::number_of_settled_skips`}
+ * the input (user manual, "Retrying dropped moves"; not in the paper). `0` tries every dropped move again in the
+ * next iteration. The skips are `ILSA_statistics::number_of_settled_skips`}
  *     \cgalParamType{`double`, non-negative and finite}
  *     \cgalParamDefault{`0.03`}
  *   \cgalParamNEnd

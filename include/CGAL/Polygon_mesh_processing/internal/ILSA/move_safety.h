@@ -341,9 +341,7 @@ public:
   /// Whether the last call of enforce() dropped the move of `v` in a way that
   /// settles the vertex (user manual, "Retrying dropped moves"): by any test
   /// but the quality floor in a star that was at or above the floor.
-  bool dropped_to_settle(std::size_t v) const {
-    return call_ != 0 && dropped_in_[v] == call_ && !above_floor_[v];
-  }
+  bool dropped_to_settle(std::size_t v) const { return call_ != 0 && dropped_in_[v] == call_ && !above_floor_[v]; }
 
   /// Orientation of face `f` at positions `pos` against the original surface.
   bool flipped(const std::vector<Vec3>& pos, std::size_t f) const {
@@ -662,7 +660,7 @@ private:
   std::vector<unsigned char> is_moved_;
   std::vector<unsigned char> above_floor_; // per vertex: its move last failed, in the last call that checked it,
                                            // the quality floor in a star at or above the floor
-  std::vector<std::uint32_t> dropped_in_; // per vertex: the last call of enforce() that dropped its move
+  std::vector<std::uint32_t> dropped_in_;  // per vertex: the last call of enforce() that dropped its move
   Round round_ = 0;
   std::uint32_t call_ = 0; // calls of enforce() so far
 };
