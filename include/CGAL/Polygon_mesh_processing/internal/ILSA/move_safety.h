@@ -135,7 +135,7 @@ public:
                  const std::vector<Index>& moved, std::vector<Vec3>& next, std::vector<Index>& next_home,
                  const Project& project) {
     for (std::size_t v : moved) {
-      tries_[v] = 0, is_moved_[v] = 1, above_floor_[v] = 0;
+      tries_[v] = 0, is_moved_[v] = 1;
       travel_[v] = added_up(travel_[v], (next[v] - previous[v]).norm());
     }
     // A round either shortens a move or is followed by a round that does or
@@ -264,7 +264,6 @@ public:
         parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
           const std::size_t v = to_measure[i];
           bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
-          above_floor_[v] = 0;
         });
       }
       offenders.clear();
@@ -658,8 +657,9 @@ private:
                                                    // (at least: each step is added rounded up)
   std::vector<std::array<float, 3>> face_travel_;  // travel_ of the face's vertices then
   std::vector<unsigned char> is_moved_;
-  std::vector<unsigned char> above_floor_; // per vertex: its move last failed, in the last call that checked it,
-                                           // the quality floor in a star at or above the floor
+  std::vector<unsigned char> above_floor_; // per vertex: set by its last round of cheap tests (every moved vertex
+                                           // has one, and one after each shortening before its fidelity tests):
+                                           // it failed the quality floor in a star at or above the floor
   std::vector<std::uint32_t> dropped_in_;  // per vertex: the last call of enforce() that dropped its move
   Round round_ = 0;
   std::uint32_t call_ = 0; // calls of enforce() so far
