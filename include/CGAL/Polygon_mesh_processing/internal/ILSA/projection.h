@@ -104,13 +104,13 @@ public:
   template <class ConcurrencyTag>
   Projector(const Flat_mesh& original, const Vertex_classification& classification, ConcurrencyTag)
       : m_(original), c_(classification) {
-    // Built here, not lazily at the first query, which may come from several threads.
-    if (m_.number_of_faces() > 0) {
+    // Built here, not lazily at the first query, which may come from several
+    // threads: rebuild() inserts the primitives and builds the tree (once; a
+    // further build() would build it again).
+    if (m_.number_of_faces() > 0)
       face_tree_.rebuild(boost::counting_iterator<Index>(0),
                          boost::counting_iterator<Index>(Index(m_.number_of_faces())), Face_triangle_map{&m_},
                          Face_point_map{&m_});
-      face_tree_.build();
-    }
 
     // Patches: faces connected across non-sharp edges (union-find).
     patch_.resize(m_.number_of_faces());
@@ -130,7 +130,7 @@ public:
       segment_edge_.push_back(Index(e));
       segments_.emplace_back(point(m_.points[m_.edges[e][0]]), point(m_.points[m_.edges[e][1]]));
     }
-    if (!segments_.empty()) crease_tree_.rebuild(segments_.cbegin(), segments_.cend()), crease_tree_.build();
+    if (!segments_.empty()) crease_tree_.rebuild(segments_.cbegin(), segments_.cend());
     compute_clearances<ConcurrencyTag>();
     compute_balls();
   }
