@@ -298,14 +298,20 @@ public:
         ring(v);
         for (const Index* u = m_.vertex_neighbors.first(v); u != m_.vertex_neighbors.last(v); ++u) ring(*u);
       });
+      // The moved vertices of the faces around the offenders: each offender
+      // and its neighbours, the vertices that share a face with it (or only
+      // an edge, whose check then finds what its last one found).
       to_check.clear();
-      for (std::size_t v : offenders)
-        for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
-          for (std::size_t w : m_.faces[*f])
-            if (is_moved_[w] && tries_[w] <= halvings_ && !checked_[w]) {
-              checked_[w] = 1;
-              to_check.push_back(Index(w));
-            }
+      auto recheck = [&](std::size_t w) {
+        if (is_moved_[w] && tries_[w] <= halvings_ && !checked_[w]) {
+          checked_[w] = 1;
+          to_check.push_back(Index(w));
+        }
+      };
+      for (std::size_t v : offenders) {
+        recheck(v);
+        for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) recheck(*w);
+      }
       for (std::size_t w : to_check) checked_[w] = 0;
     }
     ++call_;
