@@ -33,7 +33,6 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
-#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -339,43 +338,31 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
     }
   }
 
-  // Classify vertices on T_ori (paper §3). The projector's search structures
-  // depend on the input surface alone: in parallel they are built meanwhile
-  // (with no iteration to run, or none to move, they are not needed).
-  ilsa::Vertex_classification classification;
-  ilsa::Ilsa_neighborhoods neighborhoods;
-  auto classify_vertices = [&] {
-    classification = ilsa::classify(original, options);
-    ilsa::release(classification.ridge_candidate), ilsa::release(classification.attached_sharp);
-    ilsa::release(edge_list), ilsa::release(constrained_vertices), ilsa::release(constrained_edges);
-    ilsa::release(original.on_border), ilsa::release(original.non_manifold);
-    neighborhoods = ilsa::make_ilsa_neighborhoods(original, classification, movable);
-    ilsa::release(movable);
-    if (default_floor) {
-      // The minimum aspect ratio of the output is then never below the input's.
-      double input_minimum = 1.;
-      for (const auto& t : original.faces)
-        input_minimum = (std::min)(
-            input_minimum, triangle_aspect_ratio(original.points[t[0]], original.points[t[1]], original.points[t[2]]));
-      quality_floor = (std::max)(quality_floor, input_minimum);
-    }
-  };
-  std::optional<ilsa::Projector> search;
-  auto build_search = [&] { search.emplace(original, ConcurrencyTag()); };
-  if (ilsa::is_parallel<ConcurrencyTag> && iterations > 0)
-    ilsa::parallel_invoke<ConcurrencyTag>(classify_vertices, build_search);
-  else
-    classify_vertices();
+  // Classify vertices on T_ori (paper §3).
+  ilsa::Vertex_classification classification = ilsa::classify(original, options);
+  ilsa::release(classification.ridge_candidate), ilsa::release(classification.attached_sharp);
+  ilsa::release(edge_list), ilsa::release(constrained_vertices), ilsa::release(constrained_edges);
+  ilsa::release(original.on_border), ilsa::release(original.non_manifold);
   ILSA_statistics stats;
   ilsa::count_types(classification, stats);
   if (verbose)
     std::cerr << "ILSA: " << stats.number_of_smooth_vertices << " smooth, " << stats.number_of_ridge_vertices
               << " ridge, " << stats.number_of_corner_vertices << " corner, " << stats.number_of_boundary_vertices
               << " boundary vertices\n";
+
+  const ilsa::Ilsa_neighborhoods neighborhoods = ilsa::make_ilsa_neighborhoods(original, classification, movable);
+  ilsa::release(movable);
   if (neighborhoods.adjustable.empty() || iterations == 0) return stats;
-  if (!search) build_search();
-  search->attach(classification);
-  const ilsa::Projector& projector = *search;
+
+  if (default_floor) {
+    // The minimum aspect ratio of the output is then never below the input's.
+    double input_minimum = 1.;
+    for (const auto& t : original.faces)
+      input_minimum = (std::min)(
+          input_minimum, triangle_aspect_ratio(original.points[t[0]], original.points[t[1]], original.points[t[2]]));
+    quality_floor = (std::max)(quality_floor, input_minimum);
+  }
+  const ilsa::Projector projector(original, classification, ConcurrencyTag());
   // One per-face array for three uses in turn: the penalty step's weights, the
   // safety check's aspect ratios, the mean aspect ratio of the convergence stop.
   std::vector<double> face_values(original.number_of_faces());

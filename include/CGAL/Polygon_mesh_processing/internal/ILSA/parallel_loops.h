@@ -26,7 +26,6 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
 #endif
 
@@ -83,21 +82,6 @@ template <class ConcurrencyTag, class F> double parallel_max(std::size_t n, cons
   double m = 0;
   for (std::size_t i = 0; i < n; ++i) m = (std::max)(m, f(i));
   return m;
-}
-
-/// Calls `f()` and `g()`: at the same time with `CGAL::Parallel_tag` (each may
-/// run parallel loops of its own), else `f()` first. They must not write
-/// anything the other reads or writes.
-template <class ConcurrencyTag, class F, class G> void parallel_invoke(const F& f, const G& g) {
-  check_concurrency_tag<ConcurrencyTag>();
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr (is_parallel<ConcurrencyTag>) {
-    tbb::parallel_invoke(f, g);
-    return;
-  }
-#endif
-  f();
-  g();
 }
 
 /// A stamp per element (the round in which it was last handled) that the

@@ -99,12 +99,11 @@ public:
     bool guarded;     // the AABB answer was rejected by the sheet guard
   };
 
-  /// The projector of the input surface `original`, with the search
-  /// structures that depend on that surface alone (the face tree, the
-  /// vertices' clearances, the faces' bounding balls); attach() completes it.
-  /// `original` must outlive the projector: it keeps a reference.
+  /// `original` and `classification` must outlive the projector: it keeps references.
   /// `ConcurrencyTag`: how the clearances are computed (the result is the same).
-  template <class ConcurrencyTag> Projector(const Flat_mesh& original, ConcurrencyTag) : m_(original) {
+  template <class ConcurrencyTag>
+  Projector(const Flat_mesh& original, const Vertex_classification& classification, ConcurrencyTag)
+      : m_(original), c_(classification) {
     // Built here, not lazily at the first query, which may come from several
     // threads: rebuild() inserts the primitives and builds the tree (once; a
     // further build() would build it again).
@@ -112,23 +111,7 @@ public:
       face_tree_.rebuild(boost::counting_iterator<Index>(0),
                          boost::counting_iterator<Index>(Index(m_.number_of_faces())), Face_triangle_map{&m_},
                          Face_point_map{&m_});
-    compute_clearances<ConcurrencyTag>();
-    compute_balls();
-  }
 
-  /// The same, completed with attach(classification).
-  template <class ConcurrencyTag>
-  Projector(const Flat_mesh& original, const Vertex_classification& classification, ConcurrencyTag tag)
-      : Projector(original, tag) {
-    attach(classification);
-  }
-
-  /// Completes the projector with the classification of the input's vertices
-  /// (its patches and creases), which must outlive it: it keeps a reference.
-  /// Called once, before any projection. (smooth_surface_mesh_ilsa() builds
-  /// the rest of the projector while it classifies the vertices.)
-  void attach(const Vertex_classification& classification) {
-    c_ = &classification;
     // Patches: faces connected across non-sharp edges (union-find).
     patch_.resize(m_.number_of_faces());
     for (std::size_t f = 0; f < patch_.size(); ++f) patch_[f] = f;
@@ -138,22 +121,24 @@ public:
     };
     for (std::size_t e = 0; e < m_.edges.size(); ++e) {
       const auto& fs = m_.edge_faces[e];
-      if (fs[0] != npos && fs[1] != npos && !c_->sharp_edge[e]) patch_[find(fs[0])] = find(fs[1]);
+      if (fs[0] != npos && fs[1] != npos && !c_.sharp_edge[e]) patch_[find(fs[0])] = find(fs[1]);
     }
     for (std::size_t f = 0; f < patch_.size(); ++f) patch_[f] = find(f);
 
     for (std::size_t e = 0; e < m_.edges.size(); ++e) {
-      if (c_->crease_of_edge[e] == npos) continue;
+      if (c_.crease_of_edge[e] == npos) continue;
       segment_edge_.push_back(Index(e));
       segments_.emplace_back(point(m_.points[m_.edges[e][0]]), point(m_.points[m_.edges[e][1]]));
     }
     if (!segments_.empty()) crease_tree_.rebuild(segments_.cbegin(), segments_.cend());
+    compute_clearances<ConcurrencyTag>();
+    compute_balls();
   }
 
   /// Home of vertex `v` of the original mesh: an incident face, or for a ridge
   /// vertex one of its two sharp edges.
   std::size_t initial_home(std::size_t v) const {
-    if (c_->type[v] == ILSA_vertex_type::Ridge) return c_->attached_edges[v][0];
+    if (c_.type[v] == ILSA_vertex_type::Ridge) return c_.attached_edges[v][0];
     return m_.vertex_faces.size(v) > 0 ? *m_.vertex_faces.first(v) : npos;
   }
 
@@ -162,7 +147,7 @@ public:
   /// computed (false), which spares tree queries.
   Result project(std::size_t v, const Vec3& q, const Vec3& current, std::size_t home, bool guard = true) const {
     if (q == current) return {current, home, false};
-    if (c_->type[v] == ILSA_vertex_type::Ridge)
+    if (c_.type[v] == ILSA_vertex_type::Ridge)
       return guard ? project_on_crease(q, current, home) : project_on_crease_near(q, current, home);
     Result local;
     if (project_near(q, home, local, guard)) return local;
@@ -190,7 +175,7 @@ private:
   template <class F> void for_each_crease_edge_near(std::size_t home, F f) const {
     for (std::size_t w : m_.edges[home])
       for (const Index* e = m_.vertex_edges.first(w); e != m_.vertex_edges.last(w); ++e)
-        if (c_->crease_of_edge[*e] == c_->crease_of_edge[home]) f(*e);
+        if (c_.crease_of_edge[*e] == c_.crease_of_edge[home]) f(*e);
   }
 
 public:
@@ -466,10 +451,10 @@ private:
   static constexpr double thin_ratio = 1e-2;
 
   const Flat_mesh& m_;
-  const Vertex_classification* c_ = nullptr; // see attach()
-  std::vector<float> clearance_;             // per vertex, see compute_clearances()
-  std::vector<unsigned char> thin_;          // per face
-  std::vector<Ball> balls_;                  // per face, see compute_balls()
+  const Vertex_classification& c_;
+  std::vector<float> clearance_;    // per vertex, see compute_clearances()
+  std::vector<unsigned char> thin_; // per face
+  std::vector<Ball> balls_;         // per face, see compute_balls()
   std::vector<Segment> segments_;
   std::vector<Index> segment_edge_; // segment -> edge, in increasing order
   std::vector<Index> patch_;        // face -> representative face of its patch
