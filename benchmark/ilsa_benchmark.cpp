@@ -17,8 +17,7 @@
 // tangential relaxation, each run once in a child process of its own; then
 // the horse again with its vertices and faces in a random order.
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/centroid.h>
@@ -44,6 +43,7 @@
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CGAL::Polygon_mesh_processing::internal::ILSA::AABB_tree_3;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 using edge_descriptor = boost::graph_traits<Mesh>::edge_descriptor;
 
@@ -103,7 +103,7 @@ int run_child(const std::string& mode, const std::string& file) {
   const auto start = std::chrono::steady_clock::now();
   std::size_t iterations = 0;
   if (mode == "load") {
-    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+    using Tree = AABB_tree_3<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>;
     Tree tree(faces(m).first, faces(m).second, m);
     tree.build();
     iterations = tree.size() > 0;

@@ -32,9 +32,11 @@ int main(int argc, char** argv) {
 
   for (bool relax : {false, true}) {
     Mesh mesh = original; // a copy has the same edge indices and the property map
+    // add_property_map() returns the copy's existing map (property_map() would
+    // too, as a pair before CGAL 6 and as a std::optional since).
+    const auto mesh_sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
     const auto s = PMP::smooth_surface_mesh_ilsa(
-        mesh, CGAL::parameters::edge_is_constrained_map(mesh.property_map<Mesh::Edge_index, bool>("e:sharp").first)
-                  .relax_constraints(relax));
+        mesh, CGAL::parameters::edge_is_constrained_map(mesh_sharp).relax_constraints(relax));
     const auto f = PMP::mesh_fidelity_ilsa(original, mesh, CGAL::parameters::edge_is_constrained_map(sharp));
     std::cout << "relax_constraints(" << relax << "): " << s.number_of_ridge_vertices << " sliding crease vertices, "
               << f.number_of_sharp_edges << " crease edges, crease deviation " << f.max_crease_deviation

@@ -9,10 +9,9 @@
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
@@ -47,6 +46,10 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_3;
 using Surface_mesh = CGAL::Surface_mesh<Point>;
 using Polyhedron = CGAL::Polyhedron_3<K>;
+// The AABB tree types under the names of the CGAL in use (see aabb_tree.h).
+using CGAL::Polygon_mesh_processing::internal::ILSA::AABB_segment_primitive_3;
+using CGAL::Polygon_mesh_processing::internal::ILSA::AABB_tree_3;
+using CGAL::Polygon_mesh_processing::internal::ILSA::AABB_triangle_primitive_3;
 
 struct Soup {
   std::vector<Point> points;
@@ -250,7 +253,7 @@ struct Invariant_report {
 template <class Mesh, class OnCrease>
 Invariant_report check_invariants(const Mesh& original, const Mesh& smoothed, OnCrease on_crease) {
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+  using Tree = AABB_tree_3<K, Primitive>;
   Tree tree(faces(original).first, faces(original).second, original);
   const double diagonal = bbox_diagonal(original);
   const auto types = types_of(original);

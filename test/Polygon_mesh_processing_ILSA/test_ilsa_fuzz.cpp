@@ -50,7 +50,6 @@
 // with more faces.
 #include "ilsa_test_utils.h"
 
-#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 
 #include <cstdlib>
@@ -460,8 +459,7 @@ int main() {
         }
         if (crease) creases.emplace_back(original.point(source(h, original)), original.point(target(h, original)));
       }
-      using Segment_tree = CGAL::AABB_tree<
-          CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, std::vector<K::Segment_3>::const_iterator>>>;
+      using Segment_tree = AABB_tree_3<K, AABB_segment_primitive_3<K, std::vector<K::Segment_3>::const_iterator>>;
       const Segment_tree crease_tree(creases.cbegin(), creases.cend());
       for (auto v : vertices(m))
         if (types[v] == PMP::ILSA_vertex_type::Ridge && !(m.point(v) == original.point(v)))
@@ -513,7 +511,7 @@ int main() {
       const std::vector<vd> isolated = isolated_vertices(original, isolated_rng);
       Surface_mesh x = original;
       const auto stats = with_floor([&](const auto& p) { return run_on(isolated, x, CGAL::Sequential_tag(), p); });
-      using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Surface_mesh>>>;
+      using Tree = AABB_tree_3<K, CGAL::AABB_face_graph_triangle_primitive<Surface_mesh>>;
       const Tree input_tree(faces(original).first, faces(original).second, original);
       const Tree result_tree(faces(x).first, faces(x).second, x);
       double vertex_worst = 0, face_worst = 0;

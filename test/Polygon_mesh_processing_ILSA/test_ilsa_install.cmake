@@ -8,6 +8,8 @@
 #    the compile command of its program carries no warning flag of the package.
 # Also: -DBUILD=<package build dir> -DSOURCE=<package source> -DWORK=<scratch dir>
 #       -DCGAL_INCLUDE=<CGAL's include dirs> -DCXX=<compiler> -DINPUT=<mesh>
+#       -DCGAL_DIR=<the CGAL configuration of the package's build>: the consumer
+#       and the parent are configured with the same CGAL, and must find it.
 
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -18,6 +20,18 @@ function(run what)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "${what} failed (${status}):\n${out}\n${err}")
   endif()
+endfunction()
+
+# expect_cgal(<build dir>): the project found the CGAL it was given.
+function(expect_cgal build)
+  file(STRINGS "${build}/CMakeCache.txt" found REGEX "^CGAL_DIR:")
+  string(REGEX REPLACE "^CGAL_DIR:[A-Z]+=" "" found "${found}")
+  get_filename_component(found "${found}" REALPATH)
+  get_filename_component(given "${CGAL_DIR}" REALPATH)
+  if(NOT found STREQUAL given)
+    message(FATAL_ERROR "${build} found CGAL in '${found}', not in '${given}'")
+  endif()
+  message(STATUS "${build} uses the CGAL in ${given}")
 endfunction()
 
 if(MODE STREQUAL "install")
@@ -40,7 +54,8 @@ if(MODE STREQUAL "install")
   message(STATUS "installed ${count} files, none in place of a file of CGAL's installation")
 
   run("configuring the consumer" "${CMAKE_COMMAND}" -S "${here}/consumer" -B "${WORK}/consumer"
-      "-DCMAKE_PREFIX_PATH=${prefix}" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_COMPILER=${CXX}")
+      "-DCMAKE_PREFIX_PATH=${prefix}" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_COMPILER=${CXX}" "-DCGAL_DIR=${CGAL_DIR}")
+  expect_cgal("${WORK}/consumer")
   run("building the consumer" "${CMAKE_COMMAND}" --build "${WORK}/consumer")
   run("the consumer" "${WORK}/consumer/ilsa_consumer" "${INPUT}" "${WORK}/consumer.off")
   run("ilsa_smooth" "${TOOL}" "${INPUT}" "${WORK}/tool.off")
@@ -48,7 +63,8 @@ if(MODE STREQUAL "install")
   message(STATUS "the consumer's output equals ilsa_smooth's")
 elseif(MODE STREQUAL "subdirectory")
   run("configuring the parent" "${CMAKE_COMMAND}" -S "${here}/parent" -B "${WORK}/parent" "-DILSA_SOURCE_DIR=${SOURCE}"
-      -DCMAKE_EXPORT_COMPILE_COMMANDS=ON "-DCMAKE_CXX_COMPILER=${CXX}")
+      -DCMAKE_EXPORT_COMPILE_COMMANDS=ON "-DCMAKE_CXX_COMPILER=${CXX}" "-DCGAL_DIR=${CGAL_DIR}")
+  expect_cgal("${WORK}/parent")
   file(READ "${WORK}/parent/compile_commands.json" commands)
   if(NOT commands MATCHES "ilsa_consumer.cpp" OR commands MATCHES " -W" OR commands MATCHES " -O")
     message(FATAL_ERROR "the parent's compile command:\n${commands}")

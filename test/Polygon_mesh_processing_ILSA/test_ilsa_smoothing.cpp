@@ -12,8 +12,6 @@
 // projection's local answer is the AABB tree's.
 #include "ilsa_test_utils.h"
 
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 
 #include <Eigen/Cholesky>
@@ -99,8 +97,7 @@ template <class Mesh> void test_fandisk() {
     if (e.second)
       segments.emplace_back(get(CGAL::vertex_point, original, source(e.first, original)),
                             get(CGAL::vertex_point, original, target(e.first, original)));
-  using Tree =
-      CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, std::vector<K::Segment_3>::iterator>>>;
+  using Tree = AABB_tree_3<K, AABB_segment_primitive_3<K, std::vector<K::Segment_3>::iterator>>;
   Tree tree(segments.begin(), segments.end());
   const double tolerance = on_surface * bbox_diagonal(original);
   require(
@@ -388,8 +385,7 @@ template <class Mesh> void test_thin_shell() {
   const auto stats = PMP::smooth_surface_mesh_ilsa(m);
 
   // Distance of each vertex to its own sheet of the input.
-  using Tree =
-      CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::iterator>>>;
+  using Tree = AABB_tree_3<K, AABB_triangle_primitive_3<K, std::vector<K::Triangle_3>::iterator>>;
   std::vector<K::Triangle_3> outer, inner;
   const auto p0 = points_of(original);
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t> index;
@@ -460,8 +456,7 @@ template <class A, class B> bool share_a_vertex(const A& a, const B& b) {
 
 template <class Mesh> void test_local_projection() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
-  using Tree =
-      CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::iterator>>>;
+  using Tree = AABB_tree_3<K, AABB_triangle_primitive_3<K, std::vector<K::Triangle_3>::iterator>>;
   std::size_t n = 0;
   std::vector<std::pair<std::string, Mesh>> meshes;
   for (const char* name : {"fandisk.off", "mech-holes-shark.off", "hemisphere.off"})
@@ -703,8 +698,7 @@ template <class Mesh> void test_collapsed_faces_open_right_way() {
 template <class Mesh> void test_fidelity_tolerance() {
   const Mesh original = read_mesh<Mesh>(data_file("elephant.off"));
   const double diagonal = bbox_diagonal(original), tolerance = 3e-4;
-  using Tree =
-      CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::iterator>>>;
+  using Tree = AABB_tree_3<K, AABB_triangle_primitive_3<K, std::vector<K::Triangle_3>::iterator>>;
   auto triangles_of = [](const Mesh& m) {
     std::vector<K::Triangle_3> triangles;
     for (auto f : faces(m)) {

@@ -8,13 +8,11 @@
 #define CGAL_POLYGON_MESH_PROCESSING_ILSA_MESH_QUALITY_H
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
 #include <CGAL/Random.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
@@ -300,7 +298,7 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   for (auto fa = faces(a).begin(), fb = faces(b).begin(); fa != faces(a).end(); ++fa, ++fb)
     if (normal(a, *fa) * normal(b, *fb) < 0) ++r.number_of_flipped_faces;
 
-  using Face_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  using Face_tree = internal::ILSA::AABB_tree_3<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>;
   Face_tree tree(faces(a).first, faces(a).second, a);
   for (const P& p : pb) {
     const double d = std::sqrt(tree.squared_distance(p)) * scale;
@@ -373,7 +371,7 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   r.number_of_sharp_edges = original_crease.size();
   if (!original_crease.empty()) {
     using Segment_tree =
-        CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, typename Segments::const_iterator>>>;
+        internal::ILSA::AABB_tree_3<K, internal::ILSA::AABB_segment_primitive_3<K, typename Segments::const_iterator>>;
     const Segment_tree original_lines(original_crease.cbegin(), original_crease.cend());
     const Segment_tree smoothed_lines(smoothed_crease.cbegin(), smoothed_crease.cend());
     constexpr int intervals = 8;

@@ -29,15 +29,12 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H
 
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
 #include <CGAL/AABB_primitive.h>
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <boost/iterator/counting_iterator.hpp>
@@ -89,8 +86,8 @@ class Projector {
   };
   using Face_primitive =
       CGAL::AABB_primitive<Index, Face_triangle_map, Face_point_map, CGAL::Tag_true, CGAL::Tag_false>;
-  using Face_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Face_primitive>>;
-  using Crease_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segment_iterator>>>;
+  using Face_tree = AABB_tree_3<K, Face_primitive>;
+  using Crease_tree = AABB_tree_3<K, AABB_segment_primitive_3<K, Segment_iterator>>;
 
 public:
   struct Result {
