@@ -51,20 +51,26 @@ constexpr bool tbb_available = false; // --threads then has no effect
 #endif
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
+namespace defaults = CGAL::Polygon_mesh_processing::internal::ILSA::defaults;
 
 namespace {
 
 struct Options {
   std::string input = ilsa_data_file("horse.ply");
   std::string output;
-  unsigned int iterations = 20, relaxation_steps = 2;
-  double relax1 = 0.5, relax2 = 0.8, mu = 1., wl = 1., wa = 0.1, feature_angle = 20., fidelity_tolerance = 3e-4;
-  double minimum_gain = 1e-4;
-  double minimum_remaining_gain = 2e-3;
-  double retry_distance = 0.03;
+  // The library's defaults (the usage text below states them; test_ilsa_smoothing checks that it does).
+  unsigned int iterations = defaults::number_of_iterations, relaxation_steps = defaults::number_of_relaxation_steps;
+  double relax1 = defaults::relaxation, relax2 = defaults::penalty_relaxation, mu = defaults::penalty_mu;
+  double wl = defaults::length_weight, wa = defaults::area_weight, feature_angle = defaults::feature_angle;
+  double fidelity_tolerance = defaults::fidelity_tolerance;
+  double minimum_gain = defaults::minimum_quality_gain;
+  double minimum_remaining_gain = defaults::minimum_remaining_gain;
+  double retry_distance = defaults::retry_distance;
   std::optional<double> kink_angle;    // the library's default (the feature angle) when not given
   std::optional<double> quality_floor; // the library's default when not given
-  bool fix_unattached = true, project = true, safety = true, monotone = false, reject_worsening = true, verbose = false;
+  bool fix_unattached = defaults::fix_unattached_candidates, project = defaults::do_project;
+  bool safety = defaults::use_safety_constraints, monotone = defaults::quality_monotone;
+  bool reject_worsening = defaults::reject_worsening_moves, verbose = false;
   unsigned int worst = 0;                                                   // faces listed by --worst
   unsigned int threads = std::max(1u, std::thread::hardware_concurrency()); // 1: sequential
   bool triangulate = false, color_by_quality = false, color_by_type = false;

@@ -9,7 +9,8 @@
 // the default quality floor keeps the input's minimum aspect ratio; no move
 // that lowers its star's mean quality is kept; the convergence stop; the
 // progress callback; the fidelity summary without the Hausdorff distance; the
-// projection's local answer is the AABB tree's.
+// projection's local answer is the AABB tree's; the documented defaults are
+// the code's.
 #include "ilsa_test_utils.h"
 
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
@@ -17,7 +18,11 @@
 #include <Eigen/Cholesky>
 #include <Eigen/SVD>
 
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
+
+#include <cctype>
 #include <limits>
+#include <sstream>
 
 using namespace ilsa_test;
 
@@ -954,7 +959,143 @@ template <class Mesh> void test_fidelity_without_hausdorff() {
          cheap.number_of_sharp_edges == full.number_of_sharp_edges);
 }
 
+// One source of truth for the defaults (internal/ILSA/defaults.h): the
+// reference documentation of the smoother, of the classification and of the
+// quality summary, the manual's parameter table and the usage text of
+// ilsa_smooth state the same values. A default changed in one place only
+// fails here.
+double documented_value(const std::string& text) {
+  if (text == "true") return 1;
+  if (text == "false") return 0;
+  std::size_t used = 0;
+  const double value = std::stod(text, &used);
+  assert(used == text.size());
+  return value;
+}
+
+void test_documented_defaults() {
+  namespace defaults = PMP::internal::ILSA::defaults;
+  const std::string root = std::string(ILSA_DATA_DIR) + "/../../";
+  auto read = [&](const std::string& path) {
+    std::ifstream in(root + path);
+    assert(in);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  const std::map<std::string, double> code = {{"number_of_iterations", defaults::number_of_iterations},
+                                              {"ilsa_minimum_quality_gain", defaults::minimum_quality_gain},
+                                              {"ilsa_minimum_remaining_gain", defaults::minimum_remaining_gain},
+                                              {"number_of_relaxation_steps", defaults::number_of_relaxation_steps},
+                                              {"ilsa_relaxation", defaults::relaxation},
+                                              {"ilsa_penalty_relaxation", defaults::penalty_relaxation},
+                                              {"ilsa_penalty_mu", defaults::penalty_mu},
+                                              {"ilsa_length_weight", defaults::length_weight},
+                                              {"ilsa_area_weight", defaults::area_weight},
+                                              {"ilsa_feature_angle", defaults::feature_angle},
+                                              {"ilsa_fix_unattached_candidates", defaults::fix_unattached_candidates},
+                                              {"relax_constraints", defaults::relax_constraints},
+                                              {"do_project", defaults::do_project},
+                                              {"use_safety_constraints", defaults::use_safety_constraints},
+                                              {"ilsa_quality_floor", defaults::quality_floor},
+                                              {"ilsa_quality_monotone", defaults::quality_monotone},
+                                              {"ilsa_reject_worsening_moves", defaults::reject_worsening_moves},
+                                              {"ilsa_fidelity_tolerance", defaults::fidelity_tolerance},
+                                              {"ilsa_retry_distance", defaults::retry_distance},
+                                              {"ilsa_quality_threshold", defaults::quality_threshold}};
+  std::size_t checked = 0;
+  auto expect = [&](const std::string& where, const std::string& name, const std::string& text) {
+    const auto found = code.find(name);
+    assert(found != code.end());
+    if (documented_value(text) != found->second) {
+      std::cerr << where << " documents " << name << " = " << text << ", the code's default is " << found->second
+                << std::endl;
+      assert(false);
+    }
+    ++checked;
+  };
+  // The first `value` between \cgalParamDefault{ and the block's end.
+  auto reference = [&](const std::string& header, std::size_t& count) {
+    const std::string text = read("include/CGAL/Polygon_mesh_processing/" + header);
+    for (std::size_t at = text.find("\\cgalParamNBegin{"); at != std::string::npos;
+         at = text.find("\\cgalParamNBegin{", at + 1)) {
+      const std::size_t name_begin = at + 17, end = text.find("\\cgalParamNEnd", at);
+      const std::string name = text.substr(name_begin, text.find('}', name_begin) - name_begin);
+      const std::size_t value = text.find("\\cgalParamDefault{", at);
+      if (!code.count(name) || value > end) continue;
+      const std::size_t open = text.find('`', value), close = text.find('`', open + 1);
+      assert(close < end);
+      expect(header, name, text.substr(open + 1, close - open - 1));
+      ++count;
+    }
+  };
+  std::size_t smoother = 0, classification = 0, quality = 0, manual = 0, tool = 0;
+  reference("smooth_surface_mesh_ilsa.h", smoother);
+  reference("classify_vertices_ilsa.h", classification);
+  // The quality summaries list their parameters as "- `name` (default `value`)".
+  {
+    const std::string text = read("include/CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h");
+    for (const std::string name : {"ilsa_quality_threshold", "ilsa_feature_angle"}) {
+      const std::string key = "`" + name + "` (default `";
+      for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
+        const std::size_t open = at + key.size();
+        expect("ilsa_mesh_quality.h", name, text.substr(open, text.find('`', open) - open));
+        ++quality;
+      }
+    }
+  }
+  // The manual's table: "| `name` (symbol) | value... |", the value's first word.
+  {
+    std::istringstream lines(read("doc/Polygon_mesh_processing_ILSA/Polygon_mesh_processing_ILSA.txt"));
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("| `", 0) != 0) continue;
+      const std::string name = line.substr(3, line.find('`', 3) - 3);
+      const std::size_t cell = line.find("| ", 3) + 2;
+      std::string value = line.substr(cell, line.find_first_of(" |,", cell) - cell);
+      for (const std::string strip : {"`", "\u00b0"})
+        for (std::size_t at; (at = value.find(strip)) != std::string::npos;) value.erase(at, strip.size());
+      if (!code.count(name) || value.empty() || !(std::isdigit(value[0]) || value == "true" || value == "false"))
+        continue;
+      expect("the manual's parameter table", name, value);
+      ++manual;
+    }
+  }
+  // The tool's usage text: "--flag ... (default value)" on the flag's lines.
+  {
+    const std::string text = read("examples/Polygon_mesh_processing_ILSA/ilsa_smooth.cpp");
+    const std::map<std::string, std::string> flags = {{"--iterations", "number_of_iterations"},
+                                                      {"--min-gain", "ilsa_minimum_quality_gain"},
+                                                      {"--min-remaining-gain", "ilsa_minimum_remaining_gain"},
+                                                      {"--relaxation-steps", "number_of_relaxation_steps"},
+                                                      {"--relax1", "ilsa_relaxation"},
+                                                      {"--relax2", "ilsa_penalty_relaxation"},
+                                                      {"--mu", "ilsa_penalty_mu"},
+                                                      {"--wl", "ilsa_length_weight"},
+                                                      {"--wa", "ilsa_area_weight"},
+                                                      {"--feature-angle", "ilsa_feature_angle"},
+                                                      {"--fix-unattached", "ilsa_fix_unattached_candidates"},
+                                                      {"--reject-worsening", "ilsa_reject_worsening_moves"},
+                                                      {"--fidelity-tolerance", "ilsa_fidelity_tolerance"},
+                                                      {"--retry-distance", "ilsa_retry_distance"}};
+    for (const auto& [flag, name] : flags) {
+      const std::size_t at = text.find("\"  " + flag + " ");
+      assert(at != std::string::npos);
+      const std::size_t next = text.find("\"  --", at + 1), value = text.find("(default ", at);
+      assert(value < next);
+      const std::size_t begin = value + 9;
+      const std::string v = text.substr(begin, text.find(')', begin) - begin);
+      expect("ilsa_smooth's usage text", name, v);
+      ++tool;
+    }
+  }
+  std::cout << "documented defaults: " << checked << " statements agree with internal/ILSA/defaults.h (reference "
+            << smoother << " + " << classification << " + " << quality << ", manual " << manual << ", tool " << tool
+            << ")" << std::endl;
+  assert(smoother >= 15 && classification >= 3 && quality >= 2 && manual >= 13 && tool == 14);
+}
+
 int main() {
+  test_documented_defaults();
   test_local_projection<Surface_mesh>();
   test_local_projection<Polyhedron>();
   test_callback<Surface_mesh>();

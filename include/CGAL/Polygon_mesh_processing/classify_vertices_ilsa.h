@@ -11,6 +11,7 @@
 #endif
 
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
@@ -25,16 +26,6 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
-
-/// Default feature angle in degrees, CGAL's convention (the angle between the
-/// normals of the two faces of an edge, as in `detect_sharp_edges()`): 20, the
-/// paper's dihedral angle 8π/9 (160 degrees).
-constexpr double default_feature_angle = 20.;
-/// Default of the rule for ridge candidates with no sharp edge: fixed, as in the paper
-/// (user manual, "Feature Angle and Ridge Candidates Without Sharp Edges").
-constexpr bool default_fix_unattached_candidates = true;
-/// Default of `relax_constraints`: `false`, as in CGAL's smoothers.
-constexpr bool default_relax_constraints = false;
 
 /// Reads the classification parameters of `np` (paper §3; user constraints as documented) into
 /// `options`; the user's constraint maps are copied into the flat arrays
@@ -53,9 +44,9 @@ Classification_options read_classification_parameters(
 
   Classification_options options;
   const double feature_angle =
-      choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), default_feature_angle);
+      choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), defaults::feature_angle);
   options.fix_unattached_candidates = choose_parameter(get_parameter(np, internal_np::ilsa_fix_unattached_candidates),
-                                                       default_fix_unattached_candidates);
+                                                       defaults::fix_unattached_candidates);
   if (!(feature_angle >= 0 && feature_angle < 180))
     throw ILSA_error("ilsa_feature_angle must be in [0, 180) degrees (the angle between face normals), got " +
                      std::to_string(feature_angle));
@@ -82,7 +73,7 @@ Classification_options read_classification_parameters(
     options.constrained_edges = &edge_store;
     // CGAL's relax_constraints (user manual, "Constrained Edges"): unless it is
     // true, the ends of the constrained edges do not move, as in CGAL's smoothers.
-    if (!choose_parameter(get_parameter(np, internal_np::relax_constraints), default_relax_constraints))
+    if (!choose_parameter(get_parameter(np, internal_np::relax_constraints), defaults::relax_constraints))
       for (std::size_t i = 0; i < edge_list.size(); ++i)
         if (edge_store[i]) vertex_store[m.edges[i][0]] = vertex_store[m.edges[i][1]] = 1;
   }
@@ -153,7 +144,7 @@ inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
  *   \cgalParamNBegin{ilsa_feature_angle}
  *     \cgalParamDescription{an edge is sharp when the normals of its two faces make an angle larger than this, in
  * degrees (CGAL's convention, as in `detect_sharp_edges()`)} \cgalParamType{`double`, in [0, 180)}
- * \cgalParamDefault{20 (the paper's dihedral θ_f = 8π/9)} \cgalParamNEnd
+ * \cgalParamDefault{`20` (the paper's dihedral θ_f = 8π/9)} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
  *     \cgalParamDescription{whether a ridge candidate with no sharp edge is a corner (the paper's rule) or a smooth
  * vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd

@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Triangle shape measures and mesh quality summaries. The smoother, the
-// example tools, the benchmark and the tests all use these functions.
+// Mesh quality and fidelity summaries, for the tool, the examples, the
+// benchmark, the tests and users who evaluate a result. The triangle shape
+// measures they rest on (and the smoother uses) are in ilsa_triangle_quality.h.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_ILSA_MESH_QUALITY_H
 #define CGAL_POLYGON_MESH_PROCESSING_ILSA_MESH_QUALITY_H
@@ -10,9 +11,11 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Random.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
@@ -37,110 +40,6 @@
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
-
-namespace internal {
-namespace ILSA {
-
-// Edge lengths, twice the area and (if asked for: it costs three atan2) the
-// smallest angle of a triangle, in double.
-struct Triangle_shape {
-  std::array<double, 3> length; // opposite to vertex 0, 1, 2
-  double double_area;
-  double smallest_angle_degrees;
-};
-
-template <class P> std::array<std::array<double, 3>, 3> triangle_coordinates(const P& p0, const P& p1, const P& p2) {
-  return {{{CGAL::to_double(p0.x()), CGAL::to_double(p0.y()), CGAL::to_double(p0.z())},
-           {CGAL::to_double(p1.x()), CGAL::to_double(p1.y()), CGAL::to_double(p1.z())},
-           {CGAL::to_double(p2.x()), CGAL::to_double(p2.y()), CGAL::to_double(p2.z())}}};
-}
-inline std::array<double, 3> difference(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline std::array<double, 3> cross_product(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double dot_product(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-// Edge lengths and twice the area of the triangle with coordinates `v`.
-inline Triangle_shape triangle_shape_of(const std::array<std::array<double, 3>, 3>& v) {
-  Triangle_shape s;
-  const auto n = cross_product(difference(v[1], v[0]), difference(v[2], v[0]));
-  s.double_area = std::sqrt(dot_product(n, n));
-  s.smallest_angle_degrees = 180.;
-  for (int i = 0; i < 3; ++i) {
-    const auto c = difference(v[(i + 2) % 3], v[(i + 1) % 3]);
-    s.length[i] = std::sqrt(dot_product(c, c));
-  }
-  return s;
-}
-
-// The same for three points.
-template <class P> Triangle_shape triangle_shape(const P& p0, const P& p1, const P& p2) {
-  return triangle_shape_of(triangle_coordinates(p0, p1, p2));
-}
-
-// The same and the smallest angle (three atan2).
-template <class P> Triangle_shape triangle_shape_with_angle(const P& p0, const P& p1, const P& p2) {
-  const auto v = triangle_coordinates(p0, p1, p2);
-  Triangle_shape s = triangle_shape_of(v);
-  for (int i = 0; i < 3; ++i) {
-    const auto a = difference(v[(i + 1) % 3], v[i]), b = difference(v[(i + 2) % 3], v[i]);
-    const auto axb = cross_product(a, b);
-    const double angle =
-        std::atan2(std::sqrt(dot_product(axb, axb)), dot_product(a, b)) * 180. / 3.14159265358979323846;
-    s.smallest_angle_degrees = (std::min)(s.smallest_angle_degrees, angle);
-  }
-  return s;
-}
-
-// Aspect ratio q = 2√3·r_in / l_max from twice the area and the edge lengths:
-// r_in = 2A / perimeter, so q = 2√3 · (2A / perimeter) / l_max.
-inline double aspect_ratio_of_shape(double double_area, const std::array<double, 3>& length) {
-  const double perimeter = length[0] + length[1] + length[2];
-  const double longest = (std::max)({length[0], length[1], length[2]});
-  return longest > 0 ? 2. * std::sqrt(3.) * double_area / (perimeter * longest) : 0.;
-}
-
-} // namespace ILSA
-} // namespace internal
-
-/// \ingroup PkgPMPILSARef
-/// Aspect ratio `q = 2√3·r_in / l_max` of a triangle (inradius over longest
-/// edge): 1 for an equilateral triangle, 0 for a degenerate one. This is the
-/// paper's quality measure and the package's primary one.
-/// `P` is any point type with `x()`, `y()`, `z()`.
-template <class P> double triangle_aspect_ratio(const P& p0, const P& p1, const P& p2) {
-  const auto s = internal::ILSA::triangle_shape(p0, p1, p2);
-  return internal::ILSA::aspect_ratio_of_shape(s.double_area, s.length);
-}
-
-/// \ingroup PkgPMPILSARef
-/// Radius ratio `2·r_in / r_circ` of a triangle: 1 equilateral, 0 degenerate.
-template <class P> double triangle_radius_ratio(const P& p0, const P& p1, const P& p2) {
-  const auto s = internal::ILSA::triangle_shape(p0, p1, p2);
-  const double perimeter = s.length[0] + s.length[1] + s.length[2];
-  const double product = s.length[0] * s.length[1] * s.length[2];
-  // r_in = 2A / perimeter and r_circ = abc / (4A): 2 r_in / r_circ = 16 A² / (perimeter · abc).
-  return product > 0 ? 4. * s.double_area * s.double_area / (perimeter * product) : 0.;
-}
-
-/// \ingroup PkgPMPILSARef
-/// Mean ratio `4√3·A / Σ l²` of a triangle: 1 equilateral, 0 degenerate.
-template <class P> double triangle_mean_ratio(const P& p0, const P& p1, const P& p2) {
-  const auto s = internal::ILSA::triangle_shape(p0, p1, p2);
-  const double sum = s.length[0] * s.length[0] + s.length[1] * s.length[1] + s.length[2] * s.length[2];
-  return sum > 0 ? 2. * std::sqrt(3.) * s.double_area / sum : 0.;
-}
-
-/// \ingroup PkgPMPILSARef
-/// Smallest angle of a triangle, in degrees (0 for a degenerate one).
-template <class P> double triangle_minimum_angle(const P& p0, const P& p1, const P& p2) {
-  const auto s = internal::ILSA::triangle_shape_with_angle(p0, p1, p2);
-  return s.double_area > 0 ? s.smallest_angle_degrees : 0.;
-}
 
 /// \ingroup PkgPMPILSARef
 /// Summary of the shape quality of a set of triangles.
@@ -170,7 +69,8 @@ ILSA_quality_summary mesh_quality_ilsa(const FaceRange& face_range, const Triang
   using parameters::get_parameter;
   const auto vpm =
       choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-  const double threshold = choose_parameter(get_parameter(np, internal_np::ilsa_quality_threshold), 0.3);
+  const double threshold = choose_parameter(get_parameter(np, internal_np::ilsa_quality_threshold),
+                                            internal::ILSA::defaults::quality_threshold);
 
   ILSA_quality_summary s;
   s.threshold = threshold;
@@ -246,7 +146,7 @@ struct ILSA_fidelity_summary {
 /// Compares `smoothed` with `original`, which must have the same vertices and
 /// faces in the same order (as `smooth_surface_mesh_ilsa()` leaves them).
 /// Named parameters:
-/// - `ilsa_feature_angle` (default 20): an edge of `original` is sharp when the
+/// - `ilsa_feature_angle` (default `20`): an edge of `original` is sharp when the
 ///   normals of its two faces make a larger angle, in degrees (CGAL's convention,
 ///   as in `detect_sharp_edges()`); the crease deviation compares these edges;
 /// - `edge_is_constrained_map`: a map from the edges of `original` to `bool`;
@@ -263,7 +163,8 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
                                          const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const double feature_angle = choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), 20.);
+  const double feature_angle =
+      choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), internal::ILSA::defaults::feature_angle);
   const unsigned int seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
   const bool with_hausdorff = choose_parameter(get_parameter(np, internal_np::ilsa_compute_hausdorff_distance), true);
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;

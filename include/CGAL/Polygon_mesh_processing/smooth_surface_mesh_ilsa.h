@@ -16,8 +16,9 @@
 #endif
 
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
-#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/move_safety.h>
@@ -258,31 +259,41 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   using GT = boost::graph_traits<TriangleMesh>;
   using Vec3 = ilsa::Vec3;
 
-  // Named parameters, every knob and its default in one place.
+  // Named parameters, every knob in one place (the defaults: internal/ILSA/defaults.h).
+  namespace defaults = ilsa::defaults;
   using VPM = typename GetVertexPointMap<TriangleMesh, NamedParameters>::type;
   using Point = typename boost::property_traits<VPM>::value_type;
   VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tm));
-  const auto iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20);
-  const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps), 2);
-  const double relax1 = choose_parameter(get_parameter(np, internal_np::ilsa_relaxation), 0.5);
+  const auto iterations =
+      choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::number_of_iterations);
+  const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps),
+                                       defaults::number_of_relaxation_steps);
+  const double relax1 = choose_parameter(get_parameter(np, internal_np::ilsa_relaxation), defaults::relaxation);
   ilsa::Penalty_parameters penalty;
-  penalty.relax2 = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), 0.8);
-  penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), 1.);
-  penalty.length_weight = choose_parameter(get_parameter(np, internal_np::ilsa_length_weight), 1.);
-  penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), 0.1);
-  const bool do_project = choose_parameter(get_parameter(np, internal_np::do_project), true);
-  const bool use_safety = choose_parameter(get_parameter(np, internal_np::use_safety_constraints), true);
-  // Without an explicit floor: 0.5, raised to the input's minimum aspect ratio (set below, once the input is read).
+  penalty.relax2 =
+      choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), defaults::penalty_relaxation);
+  penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), defaults::penalty_mu);
+  penalty.length_weight = choose_parameter(get_parameter(np, internal_np::ilsa_length_weight), defaults::length_weight);
+  penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), defaults::area_weight);
+  const bool do_project = choose_parameter(get_parameter(np, internal_np::do_project), defaults::do_project);
+  const bool use_safety =
+      choose_parameter(get_parameter(np, internal_np::use_safety_constraints), defaults::use_safety_constraints);
+  // Without an explicit floor: the default, raised below to the input's minimum aspect ratio.
   constexpr bool default_floor =
       parameters::is_default_parameter<NamedParameters, internal_np::ilsa_quality_floor_t>::value;
-  double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), 0.5);
-  const bool quality_monotone = choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), false);
-  const bool reject_worsening = choose_parameter(get_parameter(np, internal_np::ilsa_reject_worsening_moves), true);
-  const double fidelity_tolerance = choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), 3e-4);
-  const double minimum_gain = choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), 1e-4);
+  double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), defaults::quality_floor);
+  const bool quality_monotone =
+      choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), defaults::quality_monotone);
+  const bool reject_worsening =
+      choose_parameter(get_parameter(np, internal_np::ilsa_reject_worsening_moves), defaults::reject_worsening_moves);
+  const double fidelity_tolerance =
+      choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), defaults::fidelity_tolerance);
+  const double minimum_gain =
+      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), defaults::minimum_quality_gain);
   const double minimum_remaining_gain =
-      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_remaining_gain), 2e-3);
-  const double retry_distance = choose_parameter(get_parameter(np, internal_np::ilsa_retry_distance), 0.03);
+      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_remaining_gain), defaults::minimum_remaining_gain);
+  const double retry_distance =
+      choose_parameter(get_parameter(np, internal_np::ilsa_retry_distance), defaults::retry_distance);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   const std::function<bool(double)> callback =
       choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());

@@ -16,7 +16,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_MOVE_SAFETY_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_MOVE_SAFETY_H
 
-#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>

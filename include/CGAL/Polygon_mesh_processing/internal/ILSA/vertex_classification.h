@@ -8,6 +8,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_VERTEX_CLASSIFICATION_H
 
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
@@ -67,9 +68,12 @@ struct Vertex_classification {
 };
 
 struct Classification_options {
-  double feature_angle_degrees = 160.;   // dihedral angle θ_f below which an edge is sharp
-  bool fix_unattached_candidates = true; // candidate without sharp edge: a corner (paper) or smooth
-  double kink_angle_degrees = 180.;      // a crease turning by more than this at a vertex makes it a corner
+  // Dihedral angle θ_f below which an edge is sharp (180° minus the feature angle between face normals).
+  double feature_angle_degrees = 180. - defaults::feature_angle;
+  // Candidate without sharp edge: a corner (paper) or smooth.
+  bool fix_unattached_candidates = defaults::fix_unattached_candidates;
+  // A crease turning by more than this at a vertex makes it a corner (by default the feature angle).
+  double kink_angle_degrees = defaults::feature_angle;
   const std::vector<unsigned char>* constrained_vertices = nullptr; // user's vertex_is_constrained_map
   const std::vector<unsigned char>* constrained_edges = nullptr;    // user's edge_is_constrained_map
 };
