@@ -1054,7 +1054,8 @@ void test_documented_defaults() {
       std::string value = line.substr(cell, line.find_first_of(" |,", cell) - cell);
       for (const std::string strip : {"`", "\u00b0"})
         for (std::size_t at; (at = value.find(strip)) != std::string::npos;) value.erase(at, strip.size());
-      if (!code.count(name) || value.empty() || !(std::isdigit(value[0]) || value == "true" || value == "false"))
+      if (!code.count(name) || value.empty() ||
+          !(std::isdigit(static_cast<unsigned char>(value[0])) || value == "true" || value == "false"))
         continue;
       expect("the manual's parameter table", name, value);
       ++manual;

@@ -4,8 +4,9 @@
 // The default of every ILSA named parameter, in one place: the smoother, the
 // classification, the quality and fidelity summaries and the ilsa_smooth tool
 // read them from here, and test_ilsa_smoothing checks that the reference
-// documentation of `smooth_surface_mesh_ilsa()` states the same values. Why
-// each default is what it is: user manual, "Parameters and Their Defaults".
+// documentation, the manual's parameter table and the tool's usage text state
+// the same values. Why each default is what it is: user manual, "Parameters
+// and Their Defaults".
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_DEFAULTS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_DEFAULTS_H
