@@ -40,16 +40,18 @@ void require(const Invariant_report& r, const char* what) {
 }
 
 // The package's flat copy of `tm` with its default index maps (`vertex_list`,
-// `edge_list`: the descriptors in flat order).
+// `edge_list`: the descriptors in flat order; `incidences`: what only the
+// set-up reads).
 template <class Mesh>
 CGAL::Polygon_mesh_processing::internal::ILSA::Flat_mesh
 flat_copy(const Mesh& tm, std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& vertex_list,
-          std::vector<typename boost::graph_traits<Mesh>::edge_descriptor>& edge_list) {
+          std::vector<typename boost::graph_traits<Mesh>::edge_descriptor>& edge_list,
+          CGAL::Polygon_mesh_processing::internal::ILSA::Set_up_incidences& incidences) {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
   const auto np = CGAL::parameters::default_values();
   ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, np))> vertex_index{ilsa::vertex_index_map_of(tm, np), {}};
   return ilsa::build_flat_mesh(tm, get(CGAL::vertex_point, tm), vertex_list, vertex_index,
-                               ilsa::face_index_map_of(tm, np), edge_list);
+                               ilsa::face_index_map_of(tm, np), edge_list, incidences);
 }
 
 template <class Mesh> void test_perturbed_cube() {
@@ -213,7 +215,8 @@ void test_penalty_vertex_normal() {
   perturb_on_surface(tm, 0.3, 12);
   std::vector<Surface_mesh::Vertex_index> vertex_list;
   std::vector<Surface_mesh::Edge_index> edge_list;
-  const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list);
+  ilsa::Set_up_incidences incidences;
+  const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list, incidences);
   std::vector<ilsa::Vec3> normals;
   ilsa::compute_face_normals(m, m.points, normals);
   std::size_t nonzero = 0;
@@ -418,24 +421,17 @@ template <class Mesh> void test_thin_shell() {
 template <class Mesh> struct Package_setup {
   using Flat_mesh = CGAL::Polygon_mesh_processing::internal::ILSA::Flat_mesh;
   using Classification = CGAL::Polygon_mesh_processing::internal::ILSA::Vertex_classification;
-  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> vertex_list;
-  std::vector<typename boost::graph_traits<Mesh>::edge_descriptor> edge_list;
-  const Flat_mesh m;
-  const Classification c;
+  CGAL::Polygon_mesh_processing::internal::ILSA::Set_up_incidences incidences;
+  const CGAL::Polygon_mesh_processing::internal::ILSA::Flat_input<Mesh> input;
+  const Flat_mesh& m;
+  const Classification& c;
   const CGAL::Polygon_mesh_processing::internal::ILSA::Projector projector;
 
   explicit Package_setup(const Mesh& tm)
-      : m(flat_copy(tm, vertex_list, edge_list)), c(classification_of(tm)), projector(m, c, CGAL::Sequential_tag()) {}
+      : input(CGAL::Polygon_mesh_processing::internal::ILSA::classified_flat_copy(
+            tm, get(CGAL::vertex_point, tm), CGAL::parameters::default_values(), incidences)),
+        m(input.mesh), c(input.classification), projector(m, c, incidences, CGAL::Sequential_tag()) {}
   Package_setup(const Package_setup&) = delete;
-
-private:
-  Classification classification_of(const Mesh& tm) {
-    namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
-    std::vector<unsigned char> constrained_vertices, constrained_edges;
-    const auto options = ilsa::read_classification_parameters(tm, m, CGAL::parameters::default_values(), vertex_list,
-                                                              edge_list, constrained_vertices, constrained_edges);
-    return ilsa::classify(m, options);
-  }
 };
 
 // The projection's local answer (projection.h) is the closest point of the
@@ -566,8 +562,7 @@ template <class Mesh> void test_degenerate_reference() {
   const Mesh tm = to_mesh<Mesh>(s);
   const Package_setup<Mesh> setup(tm);
   const ilsa::Flat_mesh& m = setup.m;
-  std::vector<double> scratch;
-  const ilsa::Move_safety safety(m, setup.c, setup.projector, 0.5, 3e-4, true, 3, scratch);
+  const ilsa::Move_safety safety(m, setup.c, setup.incidences, setup.projector, 0.5, 3e-4, true, 3);
   std::size_t degenerate = 0;
   for (std::size_t f = 0; f < m.number_of_faces(); ++f) {
     const auto& t = m.faces[f];
@@ -655,9 +650,9 @@ template <class Mesh> void test_collapsed_faces_open_right_way() {
     const Mesh tm = to_mesh<Mesh>(s);
     const Package_setup<Mesh> setup(tm);
     const ilsa::Flat_mesh& m = setup.m;
-    std::vector<double> scratch;
-    ilsa::Move_safety safety(m, setup.c, setup.projector, 0., std::numeric_limits<double>::infinity(), false, 3,
-                             scratch);
+    std::vector<double> scratch(m.number_of_faces());
+    ilsa::Move_safety safety(m, setup.c, setup.incidences, setup.projector, 0., std::numeric_limits<double>::infinity(),
+                             false, 3);
     // Vertex (2, 1): at (1 + gap, 1) and next to (2, 0), unlike (1, 1). The
     // package's coordinates are centred and divided by the diagonal.
     auto flat = [&](double x, double y) { return ilsa::Vec3((ilsa::Vec3(x, y, 0.) - m.center) / m.scale); };
@@ -681,7 +676,7 @@ template <class Mesh> void test_collapsed_faces_open_right_way() {
       d[a] = ilsa::Vec3(move.first, move.second, 0.) / m.scale;
       next[a] += d[a];
       const auto counts = safety.enforce<CGAL::Sequential_tag>(
-          m.points, home, d, std::vector<ilsa::Index>{ilsa::Index(a)}, next, next_home, project);
+          m.points, home, d, std::vector<ilsa::Index>{ilsa::Index(a)}, next, next_home, project, scratch);
       const bool right_way = move.first > move.second;
       for (std::size_t f = 0; f < m.number_of_faces(); ++f)
         assert(safety.collapsed(next, f) || !safety.flipped(next, f));

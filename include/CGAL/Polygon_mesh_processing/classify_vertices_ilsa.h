@@ -4,19 +4,10 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_CLASSIFY_VERTICES_ILSA_H
 #define CGAL_POLYGON_MESH_PROCESSING_CLASSIFY_VERTICES_ILSA_H
 
-#include <CGAL/Named_function_parameters.h>
-#ifndef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE
-#error                                                                                                                 \
-    "CGAL's named-parameter list was included without the ILSA tags: put the package's include/ directory before CGAL's in the include path."
-#endif
-
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/set_up.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/property_map.h>
 
 #include <cmath>
 #include <string>
@@ -24,84 +15,6 @@
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
-namespace internal {
-namespace ILSA {
-
-/// Reads the classification parameters of `np` (paper §3; user constraints as documented) into
-/// `options`; the user's constraint maps are copied into the flat arrays
-/// `vertex_store` and `edge_store`, which `options` points to.
-template <class TriangleMesh, class NamedParameters>
-Classification_options read_classification_parameters(
-    const TriangleMesh& tm, const Flat_mesh& m, const NamedParameters& np,
-    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
-    const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list,
-    std::vector<unsigned char>& vertex_store, std::vector<unsigned char>& edge_store) {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
-  CGAL_USE(tm);
-
-  Classification_options options;
-  const double feature_angle =
-      choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), defaults::feature_angle);
-  options.fix_unattached_candidates = choose_parameter(get_parameter(np, internal_np::ilsa_fix_unattached_candidates),
-                                                       defaults::fix_unattached_candidates);
-  if (!(feature_angle >= 0 && feature_angle < 180))
-    throw ILSA_error("ilsa_feature_angle must be in [0, 180) degrees (the angle between face normals), got " +
-                     std::to_string(feature_angle));
-  // The classification works with the paper's dihedral angle θ_f.
-  options.feature_angle_degrees = 180. - feature_angle;
-  // By default a crease vertex is a kink when the crease turns there by more
-  // than the surface turns across a sharp edge (user manual, "Crease kinks").
-  options.kink_angle_degrees = choose_parameter(get_parameter(np, internal_np::ilsa_crease_kink_angle), feature_angle);
-  if (!(options.kink_angle_degrees >= 0 && options.kink_angle_degrees <= 180))
-    throw ILSA_error("ilsa_crease_kink_angle must be in [0, 180] degrees, got " +
-                     std::to_string(options.kink_angle_degrees));
-
-  const auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
-                                    Static_boolean_property_map<vertex_descriptor, false>());
-  vertex_store.resize(vertex_list.size());
-  for (std::size_t i = 0; i < vertex_list.size(); ++i) vertex_store[i] = get(vcm, vertex_list[i]) ? 1 : 0;
-  options.constrained_vertices = &vertex_store;
-
-  if (!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value) {
-    const auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
-                                      Static_boolean_property_map<edge_descriptor, false>());
-    edge_store.resize(edge_list.size());
-    for (std::size_t i = 0; i < edge_list.size(); ++i) edge_store[i] = get(ecm, edge_list[i]) ? 1 : 0;
-    options.constrained_edges = &edge_store;
-    // CGAL's relax_constraints (user manual, "Constrained Edges"): unless it is
-    // true, the ends of the constrained edges do not move, as in CGAL's smoothers.
-    if (!choose_parameter(get_parameter(np, internal_np::relax_constraints), defaults::relax_constraints))
-      for (std::size_t i = 0; i < edge_list.size(); ++i)
-        if (edge_store[i]) vertex_store[m.edges[i][0]] = vertex_store[m.edges[i][1]] = 1;
-  }
-  return options;
-}
-
-inline void count_types(const Vertex_classification& c, ILSA_statistics& s) {
-  s.number_of_kink_vertices = c.number_of_kinks;
-  for (ILSA_vertex_type t : c.type) {
-    switch (t) {
-    case ILSA_vertex_type::Smooth:
-      ++s.number_of_smooth_vertices;
-      break;
-    case ILSA_vertex_type::Ridge:
-      ++s.number_of_ridge_vertices;
-      break;
-    case ILSA_vertex_type::Corner:
-      ++s.number_of_corner_vertices;
-      break;
-    case ILSA_vertex_type::Boundary:
-      ++s.number_of_boundary_vertices;
-      break;
-    }
-  }
-}
-
-} // namespace ILSA
-} // namespace internal
 
 /*!
  * \ingroup PkgPMPILSARef
@@ -176,22 +89,13 @@ ILSA_statistics classify_vertices_ilsa(const TriangleMesh& tm, VertexTypeMap ver
                                        const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using GT = boost::graph_traits<TriangleMesh>;
 
   const auto vpm =
       choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-  std::vector<typename GT::vertex_descriptor> vertex_list;
-  internal::ILSA::Flat_indices<decltype(internal::ILSA::vertex_index_map_of(tm, np))> vertex_index{
-      internal::ILSA::vertex_index_map_of(tm, np), {}};
-  std::vector<typename GT::edge_descriptor> edge_list;
-  const internal::ILSA::Flat_mesh m = internal::ILSA::build_flat_mesh(
-      tm, vpm, vertex_list, vertex_index, internal::ILSA::face_index_map_of(tm, np), edge_list);
-
-  std::vector<unsigned char> constrained_vertices, constrained_edges;
-  const auto options = internal::ILSA::read_classification_parameters(tm, m, np, vertex_list, edge_list,
-                                                                      constrained_vertices, constrained_edges);
-  const auto c = internal::ILSA::classify(m, options);
-  for (std::size_t i = 0; i < vertex_list.size(); ++i) put(vertex_type_map, vertex_list[i], c.type[i]);
+  internal::ILSA::Set_up_incidences incidences;
+  const auto input = internal::ILSA::classified_flat_copy(tm, vpm, np, incidences);
+  const auto& c = input.classification;
+  for (std::size_t i = 0; i < input.vertices.size(); ++i) put(vertex_type_map, input.vertices[i], c.type[i]);
 
   ILSA_statistics s;
   internal::ILSA::count_types(c, s);

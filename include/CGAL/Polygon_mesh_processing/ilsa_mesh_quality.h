@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/feature_lines.h>
 #include <CGAL/Random.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
@@ -235,8 +236,7 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   // Sharp edges of the original, and the same edges of the smoothed mesh
   // (not the smoothed mesh's own sharp edges: an edge near the threshold could
   // change side), compared both ways.
-  const double pi = 3.14159265358979323846;
-  const double sharp_cosine = std::cos(pi - (180. - feature_angle) * pi / 180.);
+  const double sharp_cosine = internal::ILSA::feature_cosine(feature_angle);
   using Segments = std::vector<K::Segment_3>;
   Segments original_crease, smoothed_crease;
   // The user's crease edges, as pairs of vertices of `a`.
@@ -275,7 +275,7 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
         internal::ILSA::AABB_tree_3<K, internal::ILSA::AABB_segment_primitive_3<K, typename Segments::const_iterator>>;
     const Segment_tree original_lines(original_crease.cbegin(), original_crease.cend());
     const Segment_tree smoothed_lines(smoothed_crease.cbegin(), smoothed_crease.cend());
-    constexpr int intervals = 8;
+    constexpr int intervals = internal::ILSA::crease_samples;
     std::size_t samples = 0;
     auto measure = [&](const Segments& from, const Segment_tree& to) {
       for (const auto& s : from)

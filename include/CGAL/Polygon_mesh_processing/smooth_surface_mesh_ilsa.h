@@ -2,44 +2,56 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // ILSA, the improved Laplacian smoothing approach of L. Chen, Y. Zheng,
-// J. Chen and Y. Liang (ICCS 2007). This header reads the named parameters and
-// runs the global loop (the paper's Algo. 1); each stage lives in
-// internal/ILSA/, named after it.
+// J. Chen and Y. Liang (ICCS 2007). The public function is the sequence of
+// the stages: read the parameters (internal/ILSA/smoothing_parameters.h),
+// set up (set_up.h: flat copy and classification), iterate (global_loop.h:
+// displacement, penalty step, projection, safety check, stops), write back.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_SMOOTH_SURFACE_MESH_ILSA_H
 #define CGAL_POLYGON_MESH_PROCESSING_SMOOTH_SURFACE_MESH_ILSA_H
 
-#include <CGAL/Named_function_parameters.h>
-#ifndef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE
-#error                                                                                                                 \
-    "CGAL's named-parameter list was included without the ILSA tags: put the package's include/ directory before CGAL's in the include path."
-#endif
-
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
-#include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/global_loop.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/move_safety.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/penalty_adjustment.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/set_up.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/smoothing_parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/unordered_map.hpp>
 
-#include <cmath>
-#include <functional>
 #include <iostream>
-#include <string>
 #include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+/// Per flat vertex, whether it is in `range`; throws `ILSA_error` for a vertex
+/// of the range that is not one of `vertex_list` (the mesh's, in flat order).
+/// The range is checked against the mesh's own descriptors: an index map
+/// cannot be read for a descriptor that is not the mesh's.
+template <class VertexRange, class VertexDescriptor>
+std::vector<unsigned char> vertices_in_range(const VertexRange& range,
+                                             const std::vector<VertexDescriptor>& vertex_list) {
+  boost::unordered_map<VertexDescriptor, std::size_t> flat_of;
+  flat_of.reserve(vertex_list.size());
+  for (std::size_t i = 0; i < vertex_list.size(); ++i) flat_of.emplace(vertex_list[i], i);
+  std::vector<unsigned char> in_range(vertex_list.size(), 0);
+  for (auto v : range) {
+    const auto found = flat_of.find(v);
+    if (found == flat_of.end()) throw ILSA_error("a vertex of the range is not a vertex of the mesh");
+    in_range[found->second] = 1;
+  }
+  return in_range;
+}
+
+} // namespace ILSA
+} // namespace internal
+
 /*!
  * \ingroup PkgPMPILSARef
  * smooths a triangle mesh with ILSA, the improved Laplacian smoothing approach
@@ -253,263 +265,34 @@ template <typename ConcurrencyTag = CGAL::Sequential_tag, typename VertexRange, 
           typename = std::enable_if_t<!internal::ILSA::is_named_parameters<TriangleMesh>::value>>
 ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMesh& tm,
                                          const NamedParameters& np = parameters::default_values()) {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   namespace ilsa = internal::ILSA;
-  using GT = boost::graph_traits<TriangleMesh>;
-  using Vec3 = ilsa::Vec3;
-
-  // Named parameters, every knob in one place (the defaults: internal/ILSA/defaults.h).
-  namespace defaults = ilsa::defaults;
+  // 1. Read and check the named parameters (the defaults: internal/ILSA/defaults.h).
+  const ilsa::Smoothing_parameters smoothing = ilsa::read_smoothing_parameters(np);
   using VPM = typename GetVertexPointMap<TriangleMesh, NamedParameters>::type;
-  using Point = typename boost::property_traits<VPM>::value_type;
-  VPM vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(CGAL::vertex_point, tm));
-  const auto iterations =
-      choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::number_of_iterations);
-  const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps),
-                                       defaults::number_of_relaxation_steps);
-  const double relax1 = choose_parameter(get_parameter(np, internal_np::ilsa_relaxation), defaults::relaxation);
-  ilsa::Penalty_parameters penalty;
-  penalty.relax2 =
-      choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), defaults::penalty_relaxation);
-  penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), defaults::penalty_mu);
-  penalty.length_weight = choose_parameter(get_parameter(np, internal_np::ilsa_length_weight), defaults::length_weight);
-  penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), defaults::area_weight);
-  const bool do_project = choose_parameter(get_parameter(np, internal_np::do_project), defaults::do_project);
-  const bool use_safety =
-      choose_parameter(get_parameter(np, internal_np::use_safety_constraints), defaults::use_safety_constraints);
-  // Without an explicit floor: the default, raised below to the input's minimum aspect ratio.
-  constexpr bool default_floor =
-      parameters::is_default_parameter<NamedParameters, internal_np::ilsa_quality_floor_t>::value;
-  double quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), defaults::quality_floor);
-  const bool quality_monotone =
-      choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), defaults::quality_monotone);
-  const bool reject_worsening =
-      choose_parameter(get_parameter(np, internal_np::ilsa_reject_worsening_moves), defaults::reject_worsening_moves);
-  const double fidelity_tolerance =
-      choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), defaults::fidelity_tolerance);
-  const double minimum_gain =
-      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), defaults::minimum_quality_gain);
-  const double minimum_remaining_gain =
-      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_remaining_gain), defaults::minimum_remaining_gain);
-  const double retry_distance =
-      choose_parameter(get_parameter(np, internal_np::ilsa_retry_distance), defaults::retry_distance);
-  const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
-  const std::function<bool(double)> callback =
-      choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
-  // (ilsa_feature_angle, ilsa_fix_unattached_candidates and the constraint
-  // maps are read by read_classification_parameters() below.)
+  VPM vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                         get_property_map(CGAL::vertex_point, tm));
 
-  auto require = [](bool ok, const std::string& what) {
-    if (!ok) throw ILSA_error(what);
-  };
-  require(quality_floor >= 0 && quality_floor < 1, "ilsa_quality_floor must be in [0, 1)");
-  require(fidelity_tolerance > 0, "ilsa_fidelity_tolerance must be positive (infinity disables the check)");
-  require(minimum_gain >= 0 && std::isfinite(minimum_gain),
-          "ilsa_minimum_quality_gain must be non-negative and finite (0 disables this stop)");
-  require(minimum_remaining_gain >= 0 && std::isfinite(minimum_remaining_gain),
-          "ilsa_minimum_remaining_gain must be non-negative and finite (0 disables this stop)");
-  require(retry_distance >= 0 && std::isfinite(retry_distance),
-          "ilsa_retry_distance must be non-negative and finite (0 retries every dropped move at once)");
-  require(double(iterations) >= 0 && double(iterations) <= 100000, "number_of_iterations must be in [0, 100000]");
-  require(double(sweeps) >= 1 && double(sweeps) <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
-  require(relax1 > 0 && relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
-  require(penalty.relax2 > 0 && penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]");
-  require(penalty.mu > 0 && std::isfinite(penalty.mu), "ilsa_penalty_mu must be positive and finite");
-  require(penalty.length_weight >= 0 && std::isfinite(penalty.length_weight),
-          "ilsa_length_weight must be non-negative and finite");
-  require(penalty.area_weight >= 0 && std::isfinite(penalty.area_weight),
-          "ilsa_area_weight must be non-negative and finite");
-  penalty.sweeps = std::size_t(sweeps);
-
-  // Frozen flat copy of the input (T_ori), user constraints, vertex range.
-  // (Without a user map, the vertex numbering is a dynamic property of `tm`,
-  // freed once the copy is made, as everything below that only the set-up needs.)
-  std::vector<typename GT::vertex_descriptor> vertex_list;
-  std::vector<typename GT::edge_descriptor> edge_list;
-  ilsa::Flat_mesh original = [&] {
-    ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, np))> vertex_index{ilsa::vertex_index_map_of(tm, np), {}};
-    return ilsa::build_flat_mesh(tm, vpm, vertex_list, vertex_index, ilsa::face_index_map_of(tm, np), edge_list);
-  }();
-  std::vector<unsigned char> constrained_vertices, constrained_edges;
-  const auto options = ilsa::read_classification_parameters(tm, original, np, vertex_list, edge_list,
-                                                            constrained_vertices, constrained_edges);
-  std::vector<unsigned char> movable(original.number_of_vertices(), 0);
-  // The range is checked against the mesh's own descriptors: an index map
-  // cannot be read for a descriptor that is not the mesh's. (A scope of its
-  // own: the map is freed before the smoothing allocates.)
-  {
-    boost::unordered_map<typename GT::vertex_descriptor, std::size_t> flat_of;
-    flat_of.reserve(vertex_list.size());
-    for (std::size_t i = 0; i < vertex_list.size(); ++i) flat_of.emplace(vertex_list[i], i);
-    for (auto v : vertices) {
-      const auto found = flat_of.find(v);
-      require(found != flat_of.end(), "a vertex of the range is not a vertex of the mesh");
-      movable[found->second] = 1;
-    }
-  }
-
-  // Classify vertices on T_ori (paper §3).
-  ilsa::Vertex_classification classification = ilsa::classify(original, options);
-  ilsa::release(classification.ridge_candidate), ilsa::release(classification.attached_sharp);
-  ilsa::release(edge_list), ilsa::release(constrained_vertices), ilsa::release(constrained_edges);
-  ilsa::release(original.on_border), ilsa::release(original.non_manifold);
+  // 2. Set up: the frozen flat copy of the input (T_ori) and its vertex
+  // classification (paper §3), checked before anything is written.
+  ilsa::Set_up_incidences incidences; // read by the set-up only, freed before the iterations
+  const ilsa::Flat_input<TriangleMesh> input = ilsa::classified_flat_copy(tm, vpm, np, incidences);
+  const ilsa::Ilsa_neighborhoods neighborhoods = ilsa::make_ilsa_neighborhoods(
+      input.mesh, input.classification, ilsa::vertices_in_range(vertices, input.vertices));
   ILSA_statistics stats;
-  ilsa::count_types(classification, stats);
-  if (verbose)
+  ilsa::count_types(input.classification, stats);
+  if (smoothing.verbose)
     std::cerr << "ILSA: " << stats.number_of_smooth_vertices << " smooth, " << stats.number_of_ridge_vertices
               << " ridge, " << stats.number_of_corner_vertices << " corner, " << stats.number_of_boundary_vertices
               << " boundary vertices\n";
+  if (neighborhoods.adjustable.empty() || smoothing.iterations == 0) return stats;
 
-  const ilsa::Ilsa_neighborhoods neighborhoods = ilsa::make_ilsa_neighborhoods(original, classification, movable);
-  ilsa::release(movable);
-  if (neighborhoods.adjustable.empty() || iterations == 0) return stats;
+  // 3. Iterate (the paper's Algo. 1).
+  ilsa::Global_loop<ConcurrencyTag> loop(input.mesh, input.classification, neighborhoods, smoothing, incidences);
+  incidences = ilsa::Set_up_incidences();
+  loop.run(stats);
 
-  if (default_floor) {
-    // The minimum aspect ratio of the output is then never below the input's.
-    double input_minimum = 1.;
-    for (const auto& t : original.faces)
-      input_minimum = (std::min)(
-          input_minimum, triangle_aspect_ratio(original.points[t[0]], original.points[t[1]], original.points[t[2]]));
-    quality_floor = (std::max)(quality_floor, input_minimum);
-  }
-  const ilsa::Projector projector(original, classification, ConcurrencyTag());
-  // One per-face array for three uses in turn: the penalty step's weights, the
-  // safety check's aspect ratios, the mean aspect ratio of the convergence stop.
-  std::vector<double> face_values(original.number_of_faces());
-  ilsa::Move_safety safety(original, classification, projector, quality_monotone ? 1. : quality_floor,
-                           fidelity_tolerance, reject_worsening, 3, face_values);
-  // Read by the classification and the two constructors above only.
-  ilsa::release(original.edge_faces), ilsa::release(classification.sharp_edge);
-  auto project = [&](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home, bool guard) {
-    if (!do_project) return ilsa::Projector::Result{q, home, false};
-    return projector.project(v, q, current, home, guard);
-  };
-
-  double mean_edge_length = 0;
-  for (const auto& e : original.edges) mean_edge_length += (original.points[e[0]] - original.points[e[1]]).norm();
-  mean_edge_length /= double((std::max)(original.edges.size(), std::size_t(1)));
-  const double tolerance = 1e-4 * mean_edge_length;
-  penalty.tolerance = tolerance;
-
-  // T_new := T_ori. `home` is the original face (ridge: sharp edge) each vertex lies on.
-  // `next` also serves as the sweeps' second buffer before the projection fills it.
-  std::vector<Vec3> pos = original.points, next, d;
-  std::vector<ilsa::Index> home(pos.size(), ilsa::npos), next_home;
-  std::vector<ilsa::Index> moved;
-  moved.reserve(neighborhoods.adjustable.size());
-  std::vector<unsigned char> guarded(pos.size(), 0), skipped(pos.size(), 0);
-  for (std::size_t v : neighborhoods.adjustable) home[v] = projector.initial_home(v);
-  ilsa::Ilsa_workspace ilsa_workspace;
-  // Its weights' array, idle during the penalty step, holds the step's
-  // targets (three doubles per vertex): one allocation for both.
-  ilsa_workspace.weights.reserve((std::max)(original.edges.size(), 3 * pos.size()));
-  // Convergence (user manual, "Stopping early"): the mean aspect ratio of the
-  // faces, each face's computed in parallel, summed in face order.
-  auto mean_quality = [&]() {
-    ilsa::parallel_for<ConcurrencyTag>(face_values.size(), [&](std::size_t f) {
-      const auto& t = original.faces[f];
-      face_values[f] = ilsa::aspect_ratio(pos[t[0]], pos[t[1]], pos[t[2]]);
-    });
-    double sum = 0;
-    for (double q : face_values) sum += q;
-    return sum / double((std::max)(face_values.size(), std::size_t(1)));
-  };
-  const bool may_stop = minimum_gain > 0 || minimum_remaining_gain > 0;
-  double mean_q = may_stop ? mean_quality() : 0.;
-  // Retrying dropped moves (user manual, "Retrying dropped moves"): a vertex
-  // whose move the safety check or the worsening pre-test dropped (but for
-  // the quality floor in a star that was at or above it) is settled, left
-  // untested, until its neighbours have travelled `retry_length` in all since.
-  // `settled[v]`: the length they have travelled so far, or -1 when `v` is
-  // not settled (one float per vertex: the largest meshes are at the memory
-  // bound of the user manual's "Performance").
-  const bool limit_retries = use_safety && retry_distance > 0;
-  const double retry_length = retry_distance * mean_edge_length;
-  std::vector<float> settled;
-  if (limit_retries) settled.assign(pos.size(), -1.f);
-  auto is_settled = [&](std::size_t v) { return limit_retries && settled[v] >= 0; };
-
-  for (std::size_t step = 0; step < std::size_t(iterations); ++step) {
-    // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices
-    // (Algo. 3; the face normals of T_new give the discrete normal N(v) of
-    // paper §3 where the penalty plane needs it).
-    ilsa::compute_ilsa_displacement<ConcurrencyTag>(pos, neighborhoods, relax1, std::size_t(sweeps), tolerance, d,
-                                                    ilsa_workspace, next);
-    ilsa::adjust_displacement_by_penalty<ConcurrencyTag>(original, pos, neighborhoods, penalty, d, face_values, next,
-                                                         ilsa_workspace.weights);
-
-    // p(v): projection of v + d(v) onto T_ori (user manual, "Projection guard"), then the safety check; a
-    // move the check dropped in the previous iteration is first tried without projection (its pre-test).
-    next = pos;
-    next_home = home;
-    ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {
-      const std::size_t v = neighborhoods.adjustable[i];
-      skipped[v] = is_settled(v) || (use_safety && safety.drop_before_projection(pos, d, v));
-      guarded[v] = 0;
-      if (skipped[v]) return;
-      const auto r = project(v, pos[v] + d[v], pos[v], home[v], true);
-      next[v] = r.point;
-      next_home[v] = ilsa::Index(r.home);
-      guarded[v] = r.guarded;
-    });
-    moved.clear();
-    std::size_t skipped_moves = 0;
-    for (std::size_t v : neighborhoods.adjustable) {
-      stats.number_of_guarded_projections += guarded[v];
-      if (is_settled(v))
-        ++stats.number_of_settled_skips;
-      else
-        skipped_moves += skipped[v];
-      if (next[v] != pos[v]) moved.push_back(ilsa::Index(v));
-    }
-    if (use_safety) {
-      const auto counts = safety.template enforce<ConcurrencyTag>(pos, home, d, moved, next, next_home, project);
-      stats.number_of_shortened_moves += counts.shortened;
-      stats.number_of_rejected_moves += counts.rejected + skipped_moves;
-      stats.number_of_moves_dropped_before_projection += skipped_moves;
-      stats.number_of_moves += moved.size() - counts.rejected;
-    } else {
-      stats.number_of_moves += moved.size();
-    }
-    if (limit_retries) {
-      ilsa::parallel_for<ConcurrencyTag>(neighborhoods.adjustable.size(), [&](std::size_t i) {
-        const std::size_t v = neighborhoods.adjustable[i];
-        const bool was_settled = settled[v] >= 0;
-        // The neighbours' moves of this iteration count also when it dropped
-        // the move of `v`: the test saw them.
-        if (!was_settled && !(skipped[v] || safety.dropped_to_settle(v))) return;
-        double travelled = was_settled ? double(settled[v]) : 0.;
-        for (const ilsa::Index* w = original.vertex_neighbors.first(v); w != original.vertex_neighbors.last(v); ++w)
-          travelled += (next[*w] - pos[*w]).norm();
-        settled[v] = travelled < retry_length ? float(travelled) : -1.f;
-      });
-    }
-    pos.swap(next);
-    home.swap(next_home);
-    ++stats.number_of_iterations;
-    if (verbose)
-      std::cerr << "ILSA iteration " << step + 1 << ": " << moved.size() << " moves, "
-                << stats.number_of_shortened_moves << " shortened and " << stats.number_of_rejected_moves
-                << " rejected so far\n";
-    if (callback && !callback(double(step + 1) / double(iterations))) break;
-    if (may_stop) {
-      // Stop on a small gain of this iteration, or when this gain times the
-      // iterations left (what they could still add while the gains shrink
-      // from one iteration to the next) is small (user manual, "Stopping early").
-      const double before = mean_q;
-      mean_q = mean_quality();
-      const double gain = mean_q - before, left = double(iterations) - double(step + 1);
-      if (gain < minimum_gain || gain * left < minimum_remaining_gain) break;
-    }
-  }
-
-  // T_new is written back; fixed and unmoved vertices are not touched.
-  for (std::size_t v : neighborhoods.adjustable) {
-    if (pos[v] == original.points[v]) continue;
-    const Vec3 p = original.to_input(pos[v]);
-    put(vpm, vertex_list[v], Point(p.x(), p.y(), p.z()));
-  }
+  // 4. Write T_new back.
+  ilsa::write_back(input.mesh, loop.positions(), neighborhoods.adjustable, input.vertices, vpm);
   return stats;
 }
 

@@ -76,16 +76,14 @@ struct Adjacency {
   }
 };
 
+/// The flat copy: what every stage reads, for the whole call.
 struct Flat_mesh {
-  std::vector<Vec3> points;                     // normalised coordinates
-  std::vector<std::array<Index, 3>> faces;      // vertex indices, mesh orientation
-  std::vector<std::array<Index, 2>> edges;      // endpoints
-  std::vector<std::array<Index, 2>> edge_faces; // incident faces, npos on a border
-  Adjacency vertex_faces;                       // faces around each vertex
-  Adjacency vertex_neighbors;                   // one-ring vertices
-  Adjacency vertex_edges;                       // edges around each vertex, same order as vertex_neighbors
-  std::vector<unsigned char> on_border;         // endpoint of a border edge
-  std::vector<unsigned char> non_manifold;      // vertex shared by several umbrellas
+  std::vector<Vec3> points;                // normalised coordinates
+  std::vector<std::array<Index, 3>> faces; // vertex indices, mesh orientation
+  std::vector<std::array<Index, 2>> edges; // endpoints
+  Adjacency vertex_faces;                  // faces around each vertex
+  Adjacency vertex_neighbors;              // one-ring vertices
+  Adjacency vertex_edges;                  // edges around each vertex, same order as vertex_neighbors
   Vec3 center = Vec3::Zero();
   double scale = 1.;
 
@@ -93,6 +91,16 @@ struct Flat_mesh {
   std::size_t number_of_faces() const { return faces.size(); }
 
   Vec3 to_input(const Vec3& p) const { return center + scale * p; }
+};
+
+/// The incidences of the flat copy that only the set-up reads (the
+/// classification, and the constructors of Projector and Move_safety, which
+/// take them as an argument and keep no reference): apart from Flat_mesh so
+/// that their owner frees them before the iterations.
+struct Set_up_incidences {
+  std::vector<std::array<Index, 2>> edge_faces; // incident faces of each edge, npos on a border
+  std::vector<unsigned char> on_border;         // per vertex: endpoint of a border edge
+  std::vector<unsigned char> non_manifold;      // per vertex: shared by several umbrellas
 };
 
 /// Twice the area vector of triangle `f` for the positions `pos`.
@@ -257,14 +265,16 @@ inline Locality_order locality_order(std::size_t n, const std::vector<std::array
 
 /// Builds the flat copy of `tm`. `vertex_list` receives the vertex descriptors in
 /// index order, `vertex_index` the flat numbering of the vertices (its `map` must
-/// be set), `edge_list` the edge descriptors. `face_index_map` numbers the faces.
+/// be set), `edge_list` the edge descriptors, `incidences` what only the set-up
+/// reads. `face_index_map` numbers the faces.
 /// Throws `ILSA_error` for a non-triangle face, a non-finite coordinate or an
 /// index map that is not one to one; `tm` is only read.
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
                           std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
                           Flat_indices<VertexIndexMap>& vertex_index, const FaceIndexMap& face_index_map,
-                          std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list) {
+                          std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list,
+                          Set_up_incidences& incidences) {
   using GT = boost::graph_traits<TriangleMesh>;
   using vertex_descriptor = typename GT::vertex_descriptor;
   using face_descriptor = typename GT::face_descriptor;
@@ -367,15 +377,16 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
     return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
   });
 
-  m.on_border.assign(nv, 0);
+  incidences.on_border.assign(nv, 0);
   edge_list.clear();
   m.edges.reserve(records.size());
-  m.edge_faces.reserve(records.size());
+  incidences.edge_faces.clear();
+  incidences.edge_faces.reserve(records.size());
   edge_list.reserve(records.size());
   for (const Edge_record& r : records) {
-    if (r.f0 == npos || r.f1 == npos) m.on_border[r.a] = m.on_border[r.b] = 1;
+    if (r.f0 == npos || r.f1 == npos) incidences.on_border[r.a] = incidences.on_border[r.b] = 1;
     m.edges.push_back({r.a, r.b});
-    m.edge_faces.push_back({r.f0, r.f1});
+    incidences.edge_faces.push_back({r.f0, r.f1});
     edge_list.push_back(graph_edges[r.descriptor]);
   }
   std::vector<Edge_record>().swap(records);
@@ -397,13 +408,13 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   }
 
   // A vertex whose faces do not all lie in one umbrella is non-manifold.
-  m.non_manifold.assign(nv, 0);
+  incidences.non_manifold.assign(nv, 0);
   for (std::size_t i = 0; i < nv; ++i) {
     if (m.vertex_faces.size(i) == 0) continue;
     std::size_t umbrella = 0;
     for (auto h : halfedges_around_target(halfedge(vertex_list[i], tm), tm))
       if (face(h, tm) != GT::null_face()) ++umbrella;
-    if (umbrella != m.vertex_faces.size(i)) m.non_manifold[i] = 1;
+    if (umbrella != m.vertex_faces.size(i)) incidences.non_manifold[i] = 1;
   }
   return m;
 }

@@ -17,6 +17,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_MOVE_SAFETY_H
 
 #include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/feature_lines.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
@@ -66,22 +67,22 @@ public:
   /// that a move may create or increase; infinity disables the check.
   /// `reject_worsening`: drop a move that lowers the mean aspect ratio of the
   /// vertex's star, the neighbours being at their new positions.
-  /// `projector`: its bounding balls of the input faces spare distances.
-  /// `face_scratch`: a per-face array the check works in during enforce();
-  /// the caller may use it between two calls (one array less).
-  Move_safety(const Flat_mesh& original, const Vertex_classification& classification, const Projector& projector,
-              double quality_floor, double fidelity_tolerance, bool reject_worsening, std::size_t halvings,
-              std::vector<double>& face_scratch)
+  /// `original`, `classification` and `projector` (its bounding balls of the
+  /// input faces spare distances) must outlive the check: it keeps references.
+  /// `incidences` (those of `original`) is read here only.
+  Move_safety(const Flat_mesh& original, const Vertex_classification& classification,
+              const Set_up_incidences& incidences, const Projector& projector, double quality_floor,
+              double fidelity_tolerance, bool reject_worsening, std::size_t halvings)
       : m_(original), c_(classification), projector_(projector), quality_floor_(quality_floor),
         fidelity_tolerance_(fidelity_tolerance), reject_worsening_(reject_worsening),
-        halvings_((std::min)(halvings, std::size_t(100))), quality_now_(face_scratch) {
+        halvings_((std::min)(halvings, std::size_t(100))) {
     // Reference orientation of each face (see reference()): for a face that is
     // degenerate in the input, the sum of its neighbours' normals, stored.
     for (std::size_t f = 0; f < m_.number_of_faces(); ++f)
       if (unit_normal(m_.points, m_.faces[f]).isZero(0)) degenerate_faces_.push_back(Index(f));
     degenerate_references_.assign(degenerate_faces_.size(), Vec3::Zero());
     if (!degenerate_faces_.empty())
-      for (const auto& fs : m_.edge_faces)
+      for (const auto& fs : incidences.edge_faces)
         if (fs[0] != npos && fs[1] != npos)
           for (int k = 0; k < 2; ++k) {
             const auto found = std::lower_bound(degenerate_faces_.begin(), degenerate_faces_.end(), fs[k]);
@@ -90,7 +91,6 @@ public:
                   unit_normal(m_.points, m_.faces[fs[1 - k]]);
           }
     offends_.assign(m_.number_of_faces(), 0);
-    quality_now_.resize(m_.number_of_faces());
     face_round_.assign(m_.number_of_faces(), 0);
     deviation_round_.assign(m_.number_of_faces(), 0);
     bad_.assign(m_.number_of_vertices(), 0);
@@ -121,58 +121,29 @@ public:
   /// `previous[v] + d[v]`); `next`/`next_home`: the
   /// projected positions, corrected in place. `moved` lists the vertices whose
   /// position changed. `project(v, q, current, home, guard)` re-projects a shortened move (`guard` false: its
-  /// guard flag is not needed).
+  /// guard flag is not needed). `face_scratch`: a per-face array (one value
+  /// per face) the check works in; its values are not read before they are
+  /// written in this call, so the caller may use it between two calls.
   ///
-  /// A round runs either the cheap tests or the fidelity tests, then shortens
-  /// the offending moves. Each of its phases is a loop over the vertices to
-  /// test (or the offenders) whose iterations write only their own vertex or
-  /// the elements they claim (user manual, "Parallel runs"): which faces
-  /// offend and the cheap tests of each vertex, or the distances at `next` the
-  /// fidelity tests share and the fidelity tests; then the shortening of the
-  /// offending moves and the stamps of the stars they change.
+  /// The rounds of the check (user manual, "Safety check"): a round runs
+  /// either the cheap tests (cheap_tests(): flip, collapse, quality) or, once
+  /// no move fails them, the fidelity tests (fidelity_tests()), then shortens
+  /// the offending moves (shorten()) and lists the moved vertices whose stars
+  /// the shortening changed for the next round (after_shortening()). Each of
+  /// these phases is a loop over the vertices to test (or the offenders)
+  /// whose iterations write only their own vertex or the elements they claim
+  /// (user manual, "Parallel runs").
   template <class ConcurrencyTag, class Project>
   Counts enforce(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home, const std::vector<Vec3>& d,
                  const std::vector<Index>& moved, std::vector<Vec3>& next, std::vector<Index>& next_home,
-                 const Project& project) {
-    for (std::size_t v : moved) {
-      tries_[v] = 0, is_moved_[v] = 1;
-      travel_[v] = added_up(travel_[v], (next[v] - previous[v]).norm());
-    }
-    // A round either shortens a move or is followed by a round that does or
-    // by none (a round of cheap tests without offenders hands over to the
-    // fidelity tests), so there are at most 2 (halvings_ + 1) rounds per moved
-    // vertex, plus two. If the stamps could overflow in this call, they start
-    // again from 0: stamps of earlier calls only need to be older than this call's.
-    if (std::size_t(round_) + 2 * (halvings_ + 2) * (moved.size() + 1) >
-        std::size_t((std::numeric_limits<Round>::max)())) {
-      for (auto* stamps : {&face_round_, &deviation_round_, &vertex_round_, &changed_round_, &ring_changed_})
-        stamps->fill(0);
-      round_ = 0;
-    }
-    const Round first_round = round_ + 1;
-    const bool fidelity = std::isfinite(fidelity_tolerance_);
-    const bool quality_tests = quality_floor_ > 0 || reject_worsening_;
-    // to_check: vertices for the cheap tests (flip, collapse, quality);
-    // to_measure: vertices that passed them since their last fidelity test.
-    // (The first round checks `moved` itself, not a copy.)
+                 const Project& project, std::vector<double>& face_scratch) {
+    start_call(previous, moved, next);
+    // to_check: vertices for the cheap tests; to_measure: vertices that
+    // passed them since their last fidelity test. (The first round checks
+    // `moved` itself, not a copy.)
     std::vector<Index> to_check, to_measure, offenders;
     to_measure.reserve(moved.size()); // each moved vertex is in it at most once
     bool first = true;
-    // Whether a value computed in round `computed` of this call still holds,
-    // the positions it depends on having last changed in round `changed`.
-    auto current = [&](std::size_t computed, std::size_t changed) {
-      return computed == round_ || (computed >= first_round && changed < computed);
-    };
-    auto face_changed = [&](std::size_t f) {
-      const auto& t = m_.faces[f];
-      return std::size_t((std::max)({changed_round_[t[0]], changed_round_[t[1]], changed_round_[t[2]]}));
-    };
-    // Whether the caller is to compute element `i` of `stamps` in this round:
-    // its value is not current, and no other iteration has claimed it.
-    auto claim = [&](Claim_stamps& stamps, std::size_t i, std::size_t changed) {
-      const Round seen = stamps[i];
-      return !current(seen, changed) && stamps.template claim<ConcurrencyTag>(i, seen, round_);
-    };
     // The cheap tests run until no move fails them; only then do the costly
     // fidelity tests run, once on every vertex that passed the cheap tests
     // (user manual, "Order of the safety check's tests"): most moves the check
@@ -183,148 +154,18 @@ public:
       const std::vector<Index>& checking = first ? moved : to_check;
       first = false;
       const bool measuring = checking.empty();
-      if (!measuring) {
-        // The faces around the vertices to check: which offend (unless known
-        // from an earlier round of this call with the same positions), each
-        // computed by the iteration that claims it.
-        parallel_for<ConcurrencyTag>(checking.size(), [&](std::size_t i) {
-          const std::size_t v = checking[i];
-          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-            if (!claim(face_round_, *f, face_changed(*f))) continue;
-            double quality;
-            offends_[*f] = offends(previous, next, *f, quality);
-            if (quality_tests) quality_now_[*f] = quality;
-          }
-        });
-        // A vertex is shortened when any face around it offends, so every moved
-        // vertex of an offending face is; then the quality tests.
-        parallel_for<ConcurrencyTag>(checking.size(), [&](std::size_t i) {
-          const std::size_t v = checking[i];
-          bad_[v] = 0, above_floor_[v] = 0;
-          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
-            if (offends_[*f]) bad_[v] = 1;
-          if (bad_[v]) return;
-          if (!quality_tests) return;
-          const Star_quality now = star_quality_now(v);
-          // The star's worst triangle may not get worse and end below the floor.
-          if (quality_floor_ > 0 && now.worst < quality_floor_) {
-            const double before = star_quality(previous, v, previous[v]).worst;
-            if (now.worst < before) {
-              // A star at or above the floor before the move: if the halvings
-              // fail too, the drop does not settle the vertex (user manual,
-              // "Retrying dropped moves").
-              bad_[v] = 1, above_floor_[v] = !(before < quality_floor_);
-              return;
-            }
-          }
-          if (reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
-            // Dropped at once: a shorter step along a worsening direction rarely
-            // helps, and each halving costs a re-projection.
-            bad_[v] = 1;
-            tries_[v] = static_cast<unsigned char>(halvings_);
-          }
-        });
-        if (fidelity)
-          for (std::size_t v : checking)
-            if (!bad_[v] && !queued_[v]) {
-              queued_[v] = 1;
-              to_measure.push_back(Index(v));
-            }
-      } else {
-        // The fidelity tests, on the vertices that passed the cheap tests and
-        // were not dropped since. First the distances at `next` that
-        // neighbouring vertices share, unless computed in an earlier round of
-        // this call with the same positions (a face's depends on its vertices,
-        // a vertex's on the vertices up to two edges away), each computed by
-        // the iteration that claims it; then the tests that read them.
-        std::size_t kept = 0;
-        for (std::size_t v : to_measure) {
-          queued_[v] = 0;
-          if (tries_[v] <= halvings_) to_measure[kept++] = v;
-        }
-        to_measure.resize(kept);
-        parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
-          const std::size_t v = to_measure[i];
-          auto share = [&](std::size_t w) {
-            if (claim(vertex_round_, w, ring_changed_[w]))
-              vertex_now_[w] = vertex_deviation(next, w, vertex_witness_[w]);
-          };
-          share(v);
-          for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
-          for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-            if (!claim(deviation_round_, *f, face_changed(*f))) continue;
-            // A face within the tolerance keeps its last value, also within
-            // it: the value is only ever compared with the tolerance.
-            if (face_within_tolerance(*f)) continue;
-            face_now_[*f] = face_deviation(next, *f, face_witness_[*f]);
-            const auto& t = m_.faces[*f];
-            face_travel_[*f] = {travel_[t[0]], travel_[t[1]], travel_[t[2]]};
-          }
-        });
-        parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
-          const std::size_t v = to_measure[i];
-          bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
-        });
-      }
+      if (!measuring)
+        cheap_tests<ConcurrencyTag>(previous, next, checking, face_scratch, to_measure);
+      else
+        fidelity_tests<ConcurrencyTag>(previous, previous_home, next, next_home, to_measure);
       offenders.clear();
       for (std::size_t v : measuring ? to_measure : checking)
         if (bad_[v]) offenders.push_back(Index(v));
       if (measuring) to_measure.clear();
-      parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
-        const std::size_t v = offenders[i];
-        ++tries_[v];
-        const Vec3 before = next[v];
-        if (tries_[v] <= halvings_) {
-          const double t = std::ldexp(1., -int(tries_[v]));
-          const Vec3 target = previous[v] + d[v];
-          const auto r = project(v, previous[v] + t * (target - previous[v]), previous[v], previous_home[v], false);
-          next[v] = r.point;
-          next_home[v] = Index(r.home);
-        } else {
-          next[v] = previous[v];
-          next_home[v] = previous_home[v];
-        }
-        travel_[v] = added_up(travel_[v], (next[v] - before).norm());
-      });
-      // Only the stars of the vertices just changed need a new look.
-      parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
-        const std::size_t v = offenders[i];
-        changed_round_.set(v, round_);
-        auto ring = [&](std::size_t u) {
-          ring_changed_.set(u, round_);
-          for (const Index* x = m_.vertex_neighbors.first(u); x != m_.vertex_neighbors.last(u); ++x)
-            ring_changed_.set(*x, round_);
-        };
-        ring(v);
-        for (const Index* u = m_.vertex_neighbors.first(v); u != m_.vertex_neighbors.last(v); ++u) ring(*u);
-      });
-      // The moved vertices of the faces around the offenders: each offender
-      // and its neighbours, the vertices that share a face with it (or only
-      // an edge, whose check then finds what its last one found).
-      to_check.clear();
-      auto recheck = [&](std::size_t w) {
-        if (is_moved_[w] && tries_[w] <= halvings_ && !checked_[w]) {
-          checked_[w] = 1;
-          to_check.push_back(Index(w));
-        }
-      };
-      for (std::size_t v : offenders) {
-        recheck(v);
-        for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) recheck(*w);
-      }
-      for (std::size_t w : to_check) checked_[w] = 0;
+      shorten<ConcurrencyTag>(previous, previous_home, d, offenders, next, next_home, project);
+      after_shortening<ConcurrencyTag>(offenders, to_check);
     }
-    ++call_;
-    Counts counts;
-    for (std::size_t v : moved) {
-      is_moved_[v] = 0;
-      if (tries_[v] > halvings_) {
-        ++counts.rejected;
-        dropped_in_[v] = call_;
-      } else if (tries_[v] > 0)
-        ++counts.shortened;
-    }
-    return counts;
+    return finish_call(moved);
   }
 
   /// Whether to drop the move of `v` to `pos[v] + d[v]` without projecting and
@@ -373,6 +214,226 @@ public:
   }
 
 private:
+  // --- The round protocol of enforce() -------------------------------------
+
+  // Starts a call: the moved vertices and their travel, and the stamps'
+  // epoch. A round either shortens a move or is followed by a round that does
+  // or by none (a round of cheap tests without offenders hands over to the
+  // fidelity tests), so there are at most 2 (halvings_ + 1) rounds per moved
+  // vertex, plus two. If the stamps could overflow in this call, they start
+  // again from 0: stamps of earlier calls only need to be older than this call's.
+  void start_call(const std::vector<Vec3>& previous, const std::vector<Index>& moved, const std::vector<Vec3>& next) {
+    for (std::size_t v : moved) {
+      tries_[v] = 0, is_moved_[v] = 1;
+      travel_[v] = added_up(travel_[v], (next[v] - previous[v]).norm());
+    }
+    if (std::size_t(round_) + 2 * (halvings_ + 2) * (moved.size() + 1) >
+        std::size_t((std::numeric_limits<Round>::max)())) {
+      for (auto* stamps : {&face_round_, &deviation_round_, &vertex_round_, &changed_round_, &ring_changed_})
+        stamps->fill(0);
+      round_ = 0;
+    }
+    first_round_ = round_ + 1;
+  }
+
+  // Ends a call: what it did to the moves of `moved`.
+  Counts finish_call(const std::vector<Index>& moved) {
+    ++call_;
+    Counts counts;
+    for (std::size_t v : moved) {
+      is_moved_[v] = 0;
+      if (tries_[v] > halvings_) {
+        ++counts.rejected;
+        dropped_in_[v] = call_;
+      } else if (tries_[v] > 0)
+        ++counts.shortened;
+    }
+    return counts;
+  }
+
+  // Whether a value computed in round `computed` of this call still holds,
+  // the positions it depends on having last changed in round `changed`.
+  bool current(std::size_t computed, std::size_t changed) const {
+    return computed == round_ || (computed >= first_round_ && changed < computed);
+  }
+  // The last round in which a vertex of face `f` changed.
+  std::size_t face_changed(std::size_t f) const {
+    const auto& t = m_.faces[f];
+    return std::size_t((std::max)({changed_round_[t[0]], changed_round_[t[1]], changed_round_[t[2]]}));
+  }
+  // Whether the caller is to compute element `i` of `stamps` in this round:
+  // its value is not current, and no other iteration has claimed it.
+  template <class ConcurrencyTag> bool claim(Claim_stamps& stamps, std::size_t i, std::size_t changed) {
+    const Round seen = stamps[i];
+    return !current(seen, changed) && stamps.template claim<ConcurrencyTag>(i, seen, round_);
+  }
+
+  // --- The cheap tests ------------------------------------------------------
+
+  // Sets bad_ for the vertices of `checking`: a face around it offends
+  // (flip, collapse), or its star fails the quality floor or the worsening
+  // test. Those that pass join `to_measure` for the fidelity tests.
+  // `quality_now`: per face, its aspect ratio at `next`, set here.
+  template <class ConcurrencyTag>
+  void cheap_tests(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, const std::vector<Index>& checking,
+                   std::vector<double>& quality_now, std::vector<Index>& to_measure) {
+    const bool quality_tests = quality_floor_ > 0 || reject_worsening_;
+    // The faces around the vertices to check: which offend (unless known
+    // from an earlier round of this call with the same positions), each
+    // computed by the iteration that claims it.
+    parallel_for<ConcurrencyTag>(checking.size(), [&](std::size_t i) {
+      const std::size_t v = checking[i];
+      for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+        if (!claim<ConcurrencyTag>(face_round_, *f, face_changed(*f))) continue;
+        double quality;
+        offends_[*f] = offends(previous, next, *f, quality);
+        if (quality_tests) quality_now[*f] = quality;
+      }
+    });
+    // A vertex is shortened when any face around it offends, so every moved
+    // vertex of an offending face is; then the quality tests.
+    parallel_for<ConcurrencyTag>(checking.size(), [&](std::size_t i) {
+      const std::size_t v = checking[i];
+      bad_[v] = 0, above_floor_[v] = 0;
+      for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+        if (offends_[*f]) bad_[v] = 1;
+      if (bad_[v] || !quality_tests) return;
+      quality_tests_of(previous, next, v, quality_now);
+    });
+    if (std::isfinite(fidelity_tolerance_))
+      for (std::size_t v : checking)
+        if (!bad_[v] && !queued_[v]) {
+          queued_[v] = 1;
+          to_measure.push_back(Index(v));
+        }
+  }
+
+  // The quality floor and the worsening test of `v`, whose faces pass the flip
+  // and collapse tests.
+  void quality_tests_of(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t v,
+                        const std::vector<double>& quality_now) {
+    const Star_quality now = star_quality_now(v, quality_now);
+    // The star's worst triangle may not get worse and end below the floor.
+    if (quality_floor_ > 0 && now.worst < quality_floor_) {
+      const double before = star_quality(previous, v, previous[v]).worst;
+      if (now.worst < before) {
+        // A star at or above the floor before the move: if the halvings
+        // fail too, the drop does not settle the vertex (user manual,
+        // "Retrying dropped moves").
+        bad_[v] = 1, above_floor_[v] = !(before < quality_floor_);
+        return;
+      }
+    }
+    if (reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
+      // Dropped at once: a shorter step along a worsening direction rarely
+      // helps, and each halving costs a re-projection.
+      bad_[v] = 1;
+      tries_[v] = static_cast<unsigned char>(halvings_);
+    }
+  }
+
+  // --- The fidelity tests ---------------------------------------------------
+
+  // Sets bad_ for the vertices of `to_measure` that passed the cheap tests and
+  // were not dropped since (the others leave the list): the fidelity bound
+  // (deviates()) and the crease bound (crease_deviates()). First the
+  // distances at `next` that neighbouring vertices share, unless computed in
+  // an earlier round of this call with the same positions (a face's depends on
+  // its vertices, a vertex's on the vertices up to two edges away), each
+  // computed by the iteration that claims it; then the tests that read them.
+  template <class ConcurrencyTag>
+  void fidelity_tests(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home,
+                      const std::vector<Vec3>& next, const std::vector<Index>& next_home,
+                      std::vector<Index>& to_measure) {
+    std::size_t kept = 0;
+    for (std::size_t v : to_measure) {
+      queued_[v] = 0;
+      if (tries_[v] <= halvings_) to_measure[kept++] = Index(v);
+    }
+    to_measure.resize(kept);
+    parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
+      const std::size_t v = to_measure[i];
+      auto share = [&](std::size_t w) {
+        if (claim<ConcurrencyTag>(vertex_round_, w, ring_changed_[w]))
+          vertex_now_[w] = vertex_deviation(next, w, vertex_witness_[w]);
+      };
+      share(v);
+      for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) share(*w);
+      for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+        if (!claim<ConcurrencyTag>(deviation_round_, *f, face_changed(*f))) continue;
+        // A face within the tolerance keeps its last value, also within
+        // it: the value is only ever compared with the tolerance.
+        if (face_within_tolerance(*f)) continue;
+        face_now_[*f] = face_deviation(next, *f, face_witness_[*f]);
+        const auto& t = m_.faces[*f];
+        face_travel_[*f] = {travel_[t[0]], travel_[t[1]], travel_[t[2]]};
+      }
+    });
+    parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
+      const std::size_t v = to_measure[i];
+      bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
+    });
+  }
+
+  // --- The shortening -------------------------------------------------------
+
+  // Halves the move of each offender (re-projected), or after halvings_
+  // halvings drops it.
+  template <class ConcurrencyTag, class Project>
+  void shorten(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home, const std::vector<Vec3>& d,
+               const std::vector<Index>& offenders, std::vector<Vec3>& next, std::vector<Index>& next_home,
+               const Project& project) {
+    parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
+      const std::size_t v = offenders[i];
+      ++tries_[v];
+      const Vec3 before = next[v];
+      if (tries_[v] <= halvings_) {
+        const double t = std::ldexp(1., -int(tries_[v]));
+        const Vec3 target = previous[v] + d[v];
+        const auto r = project(v, previous[v] + t * (target - previous[v]), previous[v], previous_home[v], false);
+        next[v] = r.point;
+        next_home[v] = Index(r.home);
+      } else {
+        next[v] = previous[v];
+        next_home[v] = previous_home[v];
+      }
+      travel_[v] = added_up(travel_[v], (next[v] - before).norm());
+    });
+  }
+
+  // After the shortening of `offenders`: the stamps of the stars they change,
+  // and in `to_check` the moved vertices of the faces around them, each
+  // offender and its neighbours (the vertices that share a face with it, or
+  // only an edge, whose check then finds what its last one found).
+  template <class ConcurrencyTag>
+  void after_shortening(const std::vector<Index>& offenders, std::vector<Index>& to_check) {
+    parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
+      const std::size_t v = offenders[i];
+      changed_round_.set(v, round_);
+      auto ring = [&](std::size_t u) {
+        ring_changed_.set(u, round_);
+        for (const Index* x = m_.vertex_neighbors.first(u); x != m_.vertex_neighbors.last(u); ++x)
+          ring_changed_.set(*x, round_);
+      };
+      ring(v);
+      for (const Index* u = m_.vertex_neighbors.first(v); u != m_.vertex_neighbors.last(v); ++u) ring(*u);
+    });
+    to_check.clear();
+    auto recheck = [&](std::size_t w) {
+      if (is_moved_[w] && tries_[w] <= halvings_ && !checked_[w]) {
+        checked_[w] = 1;
+        to_check.push_back(Index(w));
+      }
+    };
+    for (std::size_t v : offenders) {
+      recheck(v);
+      for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w) recheck(*w);
+    }
+    for (std::size_t w : to_check) checked_[w] = 0;
+  }
+
+  // --- The tests ------------------------------------------------------------
+
   // The collapse criterion, from twice the area and the longest edge squared.
   static bool is_collapsed(double double_area, double longest_squared) {
     return double_area <= collapse_tolerance * longest_squared || longest_squared == 0;
@@ -461,9 +522,6 @@ private:
     }
     return false;
   }
-
-  // Samples per feature edge of the crease bound, as in mesh_fidelity_ilsa().
-  static constexpr int crease_samples = 8;
 
   // Distance from the point at `t` along the input edge from `v` to `u` to the
   // line `line` at `pos` around them.
@@ -606,12 +664,12 @@ private:
   };
 
   // star_quality(next, v, next[v]) from the aspect ratios of the faces at
-  // `next` computed in the current round, summed in the same order.
-  Star_quality star_quality_now(std::size_t v) const {
+  // `next` computed in the current round (`quality_now`), summed in the same order.
+  Star_quality star_quality_now(std::size_t v, const std::vector<double>& quality_now) const {
     Star_quality q;
     for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-      q.worst = (std::min)(q.worst, quality_now_[*f]);
-      q.mean += quality_now_[*f];
+      q.worst = (std::min)(q.worst, quality_now[*f]);
+      q.mean += quality_now[*f];
     }
     q.mean /= double((std::max)(m_.vertex_faces.size(v), std::size_t(1)));
     return q;
@@ -645,8 +703,6 @@ private:
   std::vector<Index> degenerate_faces_;            // faces degenerate in the input, in increasing order
   std::vector<Vec3> degenerate_references_;        // their reference orientations
   std::vector<unsigned char> offends_;             // per face, in the current round
-  std::vector<double>& quality_now_;               // per face: its aspect ratio at `next`, likewise; the
-                                                   // caller's
   std::vector<unsigned char> bad_;                 // per vertex: its move offends, in the current round
   std::vector<unsigned char> tries_;               // halvings applied to a vertex's move (at most halvings_ + 1)
   std::vector<unsigned char> checked_;             // per vertex: already in the next list to check
@@ -668,6 +724,7 @@ private:
                                            // it failed the quality floor in a star at or above the floor
   std::vector<std::uint32_t> dropped_in_;  // per vertex: the last call of enforce() that dropped its move
   Round round_ = 0;
+  Round first_round_ = 1;  // the first round of the current call of enforce()
   std::uint32_t call_ = 0; // calls of enforce() so far
 };
 

@@ -44,6 +44,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -63,27 +64,23 @@ class Projector {
   // from the flat mesh when the tree needs them (a stored copy would cost 72
   // bytes per face). The reference point is the first vertex, as for CGAL's
   // AABB_triangle_primitive.
-  struct Face_triangle_map {
+  template <class Value> struct Face_map {
     using key_type = Index;
-    using value_type = Triangle;
-    using reference = Triangle;
+    using value_type = Value;
+    using reference = Value;
     using category = boost::readable_property_map_tag;
     const Flat_mesh* m;
-    Triangle operator[](Index f) const {
+    Value operator[](Index f) const {
       const auto& t = m->faces[f];
-      return Triangle(point(m->points[t[0]]), point(m->points[t[1]]), point(m->points[t[2]]));
+      if constexpr (std::is_same_v<Value, Triangle>)
+        return Triangle(point(m->points[t[0]]), point(m->points[t[1]]), point(m->points[t[2]]));
+      else
+        return point(m->points[t[0]]);
     }
-    friend Triangle get(const Face_triangle_map& map, Index f) { return map[f]; }
+    friend Value get(const Face_map& map, Index f) { return map[f]; }
   };
-  struct Face_point_map {
-    using key_type = Index;
-    using value_type = Point;
-    using reference = Point;
-    using category = boost::readable_property_map_tag;
-    const Flat_mesh* m;
-    Point operator[](Index f) const { return point(m->points[m->faces[f][0]]); }
-    friend Point get(const Face_point_map& map, Index f) { return map[f]; }
-  };
+  using Face_triangle_map = Face_map<Triangle>;
+  using Face_point_map = Face_map<Point>;
   using Face_primitive =
       CGAL::AABB_primitive<Index, Face_triangle_map, Face_point_map, CGAL::Tag_true, CGAL::Tag_false>;
   using Face_tree = AABB_tree_3<K, Face_primitive>;
@@ -96,10 +93,12 @@ public:
     bool guarded;     // the AABB answer was rejected by the sheet guard
   };
 
-  /// `original` and `classification` must outlive the projector: it keeps references.
+  /// `original` and `classification` must outlive the projector: it keeps
+  /// references. `incidences` (those of `original`) is read here only.
   /// `ConcurrencyTag`: how the clearances are computed (the result is the same).
   template <class ConcurrencyTag>
-  Projector(const Flat_mesh& original, const Vertex_classification& classification, ConcurrencyTag)
+  Projector(const Flat_mesh& original, const Vertex_classification& classification, const Set_up_incidences& incidences,
+            ConcurrencyTag)
       : m_(original), c_(classification) {
     // Built here, not lazily at the first query, which may come from several
     // threads: rebuild() inserts the primitives and builds the tree (once; a
@@ -117,13 +116,13 @@ public:
       return f;
     };
     for (std::size_t e = 0; e < m_.edges.size(); ++e) {
-      const auto& fs = m_.edge_faces[e];
-      if (fs[0] != npos && fs[1] != npos && !c_.sharp_edge[e]) patch_[find(fs[0])] = find(fs[1]);
+      const auto& fs = incidences.edge_faces[e];
+      if (fs[0] != npos && fs[1] != npos && !c_.is_sharp(e)) patch_[find(fs[0])] = find(fs[1]);
     }
     for (std::size_t f = 0; f < patch_.size(); ++f) patch_[f] = find(f);
 
     for (std::size_t e = 0; e < m_.edges.size(); ++e) {
-      if (c_.crease_of_edge[e] == npos) continue;
+      if (!c_.is_sharp(e)) continue;
       segment_edge_.push_back(Index(e));
       segments_.emplace_back(point(m_.points[m_.edges[e][0]]), point(m_.points[m_.edges[e][1]]));
     }
@@ -181,41 +180,44 @@ public:
     const Point query = point(q);
     const auto hint = std::make_pair(point(current), Index(home));
     const auto found = face_tree_.closest_point_and_primitive(query, hint);
-    const std::size_t f = found.second;
+    K::Construct_projected_point_3 closest;
+    return tree_answer_near(
+        q, current, home, vec(found.first), found.second, [this](std::size_t h, auto f) { for_each_face_near(h, f); },
+        [&](std::size_t g) { return vec(closest(Face_triangle_map{&m_}[Index(g)], query)); });
+  }
+
+private:
+  // The sheet guard (user manual, "Projection guard"): the tree's answer
+  // `found` on element `element` when that element is near `home` (one of
+  // `for_each_near(home, f)`); otherwise the closest of the points
+  // `closest(g)` of the elements near `home`, or `current` if none is closer
+  // to `q`, flagged as guarded.
+  template <class ForEachNear, class Closest>
+  static Result tree_answer_near(const Vec3& q, const Vec3& current, std::size_t home, const Vec3& found,
+                                 std::size_t element, const ForEachNear& for_each_near, const Closest& closest) {
     bool near = false;
-    for_each_face_near(home, [&](std::size_t g) { near = near || g == f; });
-    if (near) return {vec(found.first), f, false};
+    for_each_near(home, [&](std::size_t g) { near = near || g == element; });
+    if (near) return {found, element, false};
 
     Result best{current, home, true};
     double best_distance = (q - current).squaredNorm();
-    K::Construct_projected_point_3 closest;
-    for_each_face_near(home, [&](std::size_t g) {
-      const Vec3 p = vec(closest(Face_triangle_map{&m_}[Index(g)], query));
+    for_each_near(home, [&](std::size_t g) {
+      const Vec3 p = closest(g);
       const double distance = (q - p).squaredNorm();
       if (distance < best_distance) best = {p, g, true}, best_distance = distance;
     });
     return best;
   }
 
-private:
   Result project_on_crease(const Vec3& q, const Vec3& current, std::size_t home) const {
     const Point query = point(q);
     const auto hint = std::make_pair(point(current), segments_.cbegin() + std::ptrdiff_t(segment_of(home)));
     const auto found = crease_tree_.closest_point_and_primitive(query, hint);
-    const std::size_t e = segment_edge_[std::size_t(found.second - segments_.cbegin())];
-    bool near = false;
-    for_each_crease_edge_near(home, [&](std::size_t g) { near = near || g == e; });
-    if (near) return {vec(found.first), e, false};
-
-    Result best{current, home, true};
-    double best_distance = (q - current).squaredNorm();
     K::Construct_projected_point_3 closest;
-    for_each_crease_edge_near(home, [&](std::size_t g) {
-      const Vec3 p = vec(closest(segments_[segment_of(g)], query));
-      const double distance = (q - p).squaredNorm();
-      if (distance < best_distance) best = {p, g, true}, best_distance = distance;
-    });
-    return best;
+    return tree_answer_near(
+        q, current, home, vec(found.first), segment_edge_[std::size_t(found.second - segments_.cbegin())],
+        [this](std::size_t h, auto f) { for_each_crease_edge_near(h, f); },
+        [&](std::size_t g) { return vec(closest(segments_[segment_of(g)], query)); });
   }
 
   // The closest point to `q` of the crease edges near `home` (see

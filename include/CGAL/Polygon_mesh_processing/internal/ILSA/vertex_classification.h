@@ -9,6 +9,7 @@
 
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/feature_lines.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
@@ -51,25 +52,24 @@ void compute_face_normals(const Flat_mesh& m, const std::vector<Vec3>& pos, std:
   parallel_for<ConcurrencyTag>(m.number_of_faces(), [&](std::size_t f) { normals[f] = unit_normal(pos, m.faces[f]); });
 }
 
-/// What the classification stage hands to the smoothing stages.
+/// What the classification stage hands to the smoothing stages (read for the
+/// whole call; the intermediate results stay inside classify()).
 struct Vertex_classification {
   std::vector<ILSA_vertex_type> type;
-  std::vector<unsigned char> ridge_candidate;       // |x| above the feature threshold
-  std::vector<unsigned char> sharp_edge;            // per edge (paper §3 or the user's edge map)
-  std::vector<Index> crease_of_edge;                // crease polyline of a sharp edge, npos otherwise
+  std::vector<Index> crease_of_edge;                // crease polyline of a sharp edge, npos for the other edges
   std::vector<unsigned char> feature_edge;          // sharp, or (without the user's edge map) dihedral angle below θ_f
-  std::vector<std::array<Index, 2>> attached_sharp; // a ridge vertex's two attached-sharp nodes
-  std::vector<std::array<Index, 2>> attached_edges; // and the two sharp edges leading to them
+  std::vector<std::array<Index, 2>> attached_edges; // a ridge vertex's two sharp edges
   std::size_t number_of_kinks = 0;                  // vertices with two sharp edges fixed as kinks
 
   bool is_fixed(std::size_t v) const {
     return type[v] == ILSA_vertex_type::Corner || type[v] == ILSA_vertex_type::Boundary;
   }
+  bool is_sharp(std::size_t e) const { return crease_of_edge[e] != npos; }
 };
 
 struct Classification_options {
-  // Dihedral angle θ_f below which an edge is sharp (180° minus the feature angle between face normals).
-  double feature_angle_degrees = 180. - defaults::feature_angle;
+  // Angle between face normals above which an edge is sharp (CGAL's convention; the paper's θ_f is 180° minus it).
+  double feature_angle_degrees = defaults::feature_angle;
   // Candidate without sharp edge: a corner (paper) or smooth.
   bool fix_unattached_candidates = defaults::fix_unattached_candidates;
   // A crease turning by more than this at a vertex makes it a corner (by default the feature angle).
@@ -79,14 +79,16 @@ struct Classification_options {
 };
 
 /// Classifies the vertices of `m` (paper §3), user constraints overriding.
-inline Vertex_classification classify(const Flat_mesh& m, const Classification_options& opt) {
+/// `incidences`: those of `m` (read here only).
+inline Vertex_classification classify(const Flat_mesh& m, const Set_up_incidences& incidences,
+                                      const Classification_options& opt) {
   const std::size_t nv = m.number_of_vertices(), ne = m.edges.size();
   const double pi = 3.14159265358979323846;
   // Normal deviation of two face groups meeting at the feature angle, and the
   // length |x| such a fold gives the discrete normal (user manual, classification).
-  const double deviation = pi - opt.feature_angle_degrees * pi / 180.;
+  const double deviation = feature_normal_deviation(opt.feature_angle_degrees);
   const double candidate_length = 1. / std::cos(deviation / 2.);
-  const double sharp_cosine = std::cos(deviation);
+  const double sharp_cosine = feature_cosine(opt.feature_angle_degrees);
   // Kink (user manual, "Crease kinks"): the crease's direction turns at `v`
   // by more than the kink angle, i.e. its two sharp edges meet at less than
   // 180° minus it. A vertex there is the tip of the crease: sliding would cut
@@ -100,40 +102,40 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
 
   Vertex_classification c;
   c.type.assign(nv, ILSA_vertex_type::Smooth);
-  c.ridge_candidate.assign(nv, 0);
-  c.sharp_edge.assign(ne, 0);
   c.crease_of_edge.assign(ne, npos);
   c.feature_edge.assign(ne, 0);
-  c.attached_sharp.assign(nv, {npos, npos});
   c.attached_edges.assign(nv, {npos, npos});
+  std::vector<unsigned char> ridge_candidate(nv, 0);                  // |x| above the feature threshold
+  std::vector<unsigned char> sharp_edge(ne, 0);                       // per edge (paper §3 or the user's edge map)
+  std::vector<std::array<Index, 2>> attached_sharp(nv, {npos, npos}); // a candidate's first two attached-sharp nodes
 
   std::vector<Vec3> face_normals;
   compute_face_normals(m, m.points, face_normals);
 
   for (std::size_t v = 0; v < nv; ++v) {
-    if (m.on_border[v])
+    if (incidences.on_border[v])
       c.type[v] = ILSA_vertex_type::Boundary;
-    else if (m.vertex_faces.size(v) == 0 || m.non_manifold[v])
+    else if (m.vertex_faces.size(v) == 0 || incidences.non_manifold[v])
       c.type[v] = ILSA_vertex_type::Corner;
     else if (!opt.constrained_edges)
-      c.ridge_candidate[v] = discrete_normal(m, face_normals, v).norm() > candidate_length;
+      ridge_candidate[v] = discrete_normal(m, face_normals, v).norm() > candidate_length;
   }
 
   for (std::size_t e = 0; e < ne; ++e) {
     if (opt.constrained_edges) {
-      c.sharp_edge[e] = (*opt.constrained_edges)[e];
+      sharp_edge[e] = (*opt.constrained_edges)[e];
       continue;
     }
     const auto& ends = m.edges[e];
-    const auto& fs = m.edge_faces[e];
+    const auto& fs = incidences.edge_faces[e];
     if (fs[0] == npos || fs[1] == npos) continue;
     // Dihedral angle below θ_f <=> face normals more than π − θ_f apart. Such
     // an edge is sharp (a crease edge) only between two ridge candidates
     // (paper §3); the others are still feature edges the safety check keeps.
     c.feature_edge[e] = face_normals[fs[0]].dot(face_normals[fs[1]]) < sharp_cosine;
-    c.sharp_edge[e] = c.feature_edge[e] && c.ridge_candidate[ends[0]] && c.ridge_candidate[ends[1]];
+    sharp_edge[e] = c.feature_edge[e] && ridge_candidate[ends[0]] && ridge_candidate[ends[1]];
   }
-  for (std::size_t e = 0; e < ne; ++e) c.feature_edge[e] = c.feature_edge[e] || c.sharp_edge[e];
+  for (std::size_t e = 0; e < ne; ++e) c.feature_edge[e] = c.feature_edge[e] || sharp_edge[e];
 
   // Attached-sharp nodes decide between ridge and corner (paper §3), user edges overriding.
   for (std::size_t v = 0; v < nv; ++v) {
@@ -141,16 +143,16 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
     std::size_t count = 0;
     const Index* nb = m.vertex_neighbors.first(v);
     for (const Index* e = m.vertex_edges.first(v); e != m.vertex_edges.last(v); ++e, ++nb) {
-      if (!c.sharp_edge[*e]) continue;
+      if (!sharp_edge[*e]) continue;
       if (count < 2) {
-        c.attached_sharp[v][count] = *nb;
+        attached_sharp[v][count] = *nb;
         c.attached_edges[v][count] = *e;
       }
       ++count;
     }
-    const bool candidate = opt.constrained_edges ? count > 0 : bool(c.ridge_candidate[v]);
+    const bool candidate = opt.constrained_edges ? count > 0 : bool(ridge_candidate[v]);
     if (!candidate) continue;
-    if (count == 2 && is_kink(m.points[v], m.points[c.attached_sharp[v][0]], m.points[c.attached_sharp[v][1]])) {
+    if (count == 2 && is_kink(m.points[v], m.points[attached_sharp[v][0]], m.points[attached_sharp[v][1]])) {
       c.type[v] = ILSA_vertex_type::Corner;
       ++c.number_of_kinks;
     } else if (count == 2)
@@ -165,7 +167,7 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
         c.type[v] = ILSA_vertex_type::Corner;
 
   for (std::size_t v = 0; v < nv; ++v)
-    if (c.type[v] != ILSA_vertex_type::Ridge) c.attached_sharp[v] = c.attached_edges[v] = {npos, npos};
+    if (c.type[v] != ILSA_vertex_type::Ridge) c.attached_edges[v] = {npos, npos};
 
   // Crease polylines: sharp edges chained through ridge vertices (union-find).
   std::vector<std::size_t> parent(ne);
@@ -177,7 +179,7 @@ inline Vertex_classification classify(const Flat_mesh& m, const Classification_o
   for (std::size_t v = 0; v < nv; ++v)
     if (c.type[v] == ILSA_vertex_type::Ridge) parent[find(c.attached_edges[v][0])] = find(c.attached_edges[v][1]);
   for (std::size_t e = 0; e < ne; ++e)
-    if (c.sharp_edge[e]) c.crease_of_edge[e] = find(e);
+    if (sharp_edge[e]) c.crease_of_edge[e] = find(e);
   return c;
 }
 

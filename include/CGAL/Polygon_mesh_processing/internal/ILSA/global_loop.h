@@ -1,0 +1,250 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The global loop of ILSA (the paper's Algo. 1) on the flat copy: each
+// iteration computes the displacements (Algo. 2 and 3), projects the moved
+// vertices onto the input (user manual, "Projection guard"), applies the
+// safety check, and tests the stops (user manual, "Stopping early").
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_GLOBAL_LOOP_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_GLOBAL_LOOP_H
+
+#include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/move_safety.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/penalty_adjustment.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/smoothing_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <iostream>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+/// The iterations of one call. `original`, `classification`, `neighborhoods`
+/// and `parameters` must outlive the loop (it keeps references);
+/// `incidences` is read by the constructor only (the projector's patches and
+/// the safety check's reference orientations), so the caller frees it once
+/// the loop is built.
+template <class ConcurrencyTag> class Global_loop {
+public:
+  Global_loop(const Flat_mesh& original, const Vertex_classification& classification,
+              const Ilsa_neighborhoods& neighborhoods, const Smoothing_parameters& parameters,
+              const Set_up_incidences& incidences)
+      : m_(original), nb_(neighborhoods), p_(parameters), penalty_(parameters.penalty),
+        projector_(original, classification, incidences, ConcurrencyTag()),
+        safety_(original, classification, incidences, projector_, floor_of_check(original, parameters),
+                parameters.fidelity_tolerance, parameters.reject_worsening, 3),
+        face_values_(original.number_of_faces()) {
+    double mean_edge_length = 0;
+    for (const auto& e : m_.edges) mean_edge_length += (m_.points[e[0]] - m_.points[e[1]]).norm();
+    mean_edge_length /= double((std::max)(m_.edges.size(), std::size_t(1)));
+    tolerance_ = 1e-4 * mean_edge_length;
+    penalty_.tolerance = tolerance_;
+
+    // T_new := T_ori. `home_` is the original face (ridge: sharp edge) each vertex lies on.
+    pos_ = m_.points;
+    home_.assign(pos_.size(), npos);
+    moved_.reserve(nb_.adjustable.size());
+    guarded_.assign(pos_.size(), 0);
+    skipped_.assign(pos_.size(), 0);
+    for (std::size_t v : nb_.adjustable) home_[v] = Index(projector_.initial_home(v));
+    // Its weights' array, idle during the penalty step, holds the step's
+    // targets (three doubles per vertex): one allocation for both.
+    workspace_.weights.reserve((std::max)(m_.edges.size(), 3 * pos_.size()));
+    limit_retries_ = p_.use_safety && p_.retry_distance > 0;
+    retry_length_ = p_.retry_distance * mean_edge_length;
+    if (limit_retries_) settled_.assign(pos_.size(), -1.f);
+  }
+
+  /// Runs the iterations until `parameters.iterations`, a stop or the callback ends them.
+  void run(ILSA_statistics& stats) {
+    double mean_q = p_.may_stop() ? mean_quality() : 0.;
+    for (std::size_t step = 0; step < p_.iterations; ++step) {
+      iterate(stats);
+      if (p_.verbose)
+        std::cerr << "ILSA iteration " << step + 1 << ": " << moved_.size() << " moves, "
+                  << stats.number_of_shortened_moves << " shortened and " << stats.number_of_rejected_moves
+                  << " rejected so far\n";
+      if (p_.callback && !p_.callback(double(step + 1) / double(p_.iterations))) break;
+      if (p_.may_stop()) {
+        // Stop on a small gain of this iteration, or when this gain times the
+        // iterations left (what they could still add while the gains shrink
+        // from one iteration to the next) is small (user manual, "Stopping early").
+        const double before = mean_q;
+        mean_q = mean_quality();
+        const double gain = mean_q - before, left = double(p_.iterations) - double(step + 1);
+        if (gain < p_.minimum_gain || gain * left < p_.minimum_remaining_gain) break;
+      }
+    }
+  }
+
+  /// T_new, in the normalised coordinates of the flat copy.
+  const std::vector<Vec3>& positions() const { return pos_; }
+
+private:
+  static double floor_of_check(const Flat_mesh& m, const Smoothing_parameters& p) {
+    if (!p.raise_floor_to_input_minimum) return p.floor_of_check();
+    // The minimum aspect ratio of the output is then never below the input's.
+    double input_minimum = 1.;
+    for (const auto& t : m.faces)
+      input_minimum = (std::min)(input_minimum, triangle_aspect_ratio(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
+    return p.quality_monotone ? 1. : (std::max)(p.quality_floor, input_minimum);
+  }
+
+  // One global iteration: the displacements, the projected moves, the safety
+  // check, the settled vertices; then T_new takes the accepted positions.
+  void iterate(ILSA_statistics& stats) {
+    compute_displacements();
+    const std::size_t skipped_moves = project_moves(stats);
+    check_moves(skipped_moves, stats);
+    if (limit_retries_) update_settled();
+    pos_.swap(next_);
+    home_.swap(next_home_);
+    ++stats.number_of_iterations;
+  }
+
+  // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices
+  // (Algo. 3; the face normals of T_new give the discrete normal N(v) of
+  // paper §3 where the penalty plane needs it). `next_` serves as the
+  // sweeps' second buffer before the projection fills it.
+  void compute_displacements() {
+    compute_ilsa_displacement<ConcurrencyTag>(pos_, nb_, p_.relax1, p_.sweeps, tolerance_, d_, workspace_, next_);
+    adjust_displacement_by_penalty<ConcurrencyTag>(m_, pos_, nb_, penalty_, d_, face_values_, next_,
+                                                   workspace_.weights);
+  }
+
+  // p(v): projection of v + d(v) onto T_ori, into `next_`; a move the check
+  // dropped in the previous iteration is first tried without projection (its
+  // pre-test), and a settled vertex stays. Lists the moved vertices; returns
+  // the number of moves skipped by the pre-test.
+  std::size_t project_moves(ILSA_statistics& stats) {
+    next_ = pos_;
+    next_home_ = home_;
+    parallel_for<ConcurrencyTag>(nb_.adjustable.size(), [&](std::size_t i) {
+      const std::size_t v = nb_.adjustable[i];
+      skipped_[v] = is_settled(v) || (p_.use_safety && safety_.drop_before_projection(pos_, d_, v));
+      guarded_[v] = 0;
+      if (skipped_[v]) return;
+      const auto r = project(v, pos_[v] + d_[v], pos_[v], home_[v], true);
+      next_[v] = r.point;
+      next_home_[v] = Index(r.home);
+      guarded_[v] = r.guarded;
+    });
+    moved_.clear();
+    std::size_t skipped_moves = 0;
+    for (std::size_t v : nb_.adjustable) {
+      stats.number_of_guarded_projections += guarded_[v];
+      if (is_settled(v))
+        ++stats.number_of_settled_skips;
+      else
+        skipped_moves += skipped_[v];
+      if (next_[v] != pos_[v]) moved_.push_back(Index(v));
+    }
+    return skipped_moves;
+  }
+
+  // The safety check of the moves (move_safety.h), and the counts.
+  void check_moves(std::size_t skipped_moves, ILSA_statistics& stats) {
+    if (!p_.use_safety) {
+      stats.number_of_moves += moved_.size();
+      return;
+    }
+    const auto project_again = [this](std::size_t v, const Vec3& q, const Vec3& current, std::size_t home, bool guard) {
+      return project(v, q, current, home, guard);
+    };
+    const auto counts = safety_.template enforce<ConcurrencyTag>(pos_, home_, d_, moved_, next_, next_home_,
+                                                                 project_again, face_values_);
+    stats.number_of_shortened_moves += counts.shortened;
+    stats.number_of_rejected_moves += counts.rejected + skipped_moves;
+    stats.number_of_moves_dropped_before_projection += skipped_moves;
+    stats.number_of_moves += moved_.size() - counts.rejected;
+  }
+
+  Projector::Result project(std::size_t v, const Vec3& q, const Vec3& current, std::size_t home, bool guard) const {
+    if (!p_.do_project) return Projector::Result{q, home, false};
+    return projector_.project(v, q, current, home, guard);
+  }
+
+  // Retrying dropped moves (user manual, "Retrying dropped moves"): a vertex
+  // whose move the safety check or the worsening pre-test dropped (but for
+  // the quality floor in a star that was at or above it) is settled, left
+  // untested, until its neighbours have travelled `retry_length_` in all since.
+  bool is_settled(std::size_t v) const { return limit_retries_ && settled_[v] >= 0; }
+  void update_settled() {
+    parallel_for<ConcurrencyTag>(nb_.adjustable.size(), [&](std::size_t i) {
+      const std::size_t v = nb_.adjustable[i];
+      const bool was_settled = settled_[v] >= 0;
+      // The neighbours' moves of this iteration count also when it dropped
+      // the move of `v`: the test saw them.
+      if (!was_settled && !(skipped_[v] || safety_.dropped_to_settle(v))) return;
+      double travelled = was_settled ? double(settled_[v]) : 0.;
+      for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w)
+        travelled += (next_[*w] - pos_[*w]).norm();
+      settled_[v] = travelled < retry_length_ ? float(travelled) : -1.f;
+    });
+  }
+
+  // Convergence (user manual, "Stopping early"): the mean aspect ratio of the
+  // faces, each face's computed in parallel, summed in face order.
+  double mean_quality() {
+    parallel_for<ConcurrencyTag>(face_values_.size(), [&](std::size_t f) {
+      const auto& t = m_.faces[f];
+      face_values_[f] = aspect_ratio(pos_[t[0]], pos_[t[1]], pos_[t[2]]);
+    });
+    double sum = 0;
+    for (double q : face_values_) sum += q;
+    return sum / double((std::max)(face_values_.size(), std::size_t(1)));
+  }
+
+  const Flat_mesh& m_;
+  const Ilsa_neighborhoods& nb_;
+  const Smoothing_parameters& p_;
+  Penalty_parameters penalty_; // the parameters' with the sweeps' tolerance
+  const Projector projector_;
+  Move_safety safety_;
+  // One per-face array, lent in turn to the penalty step (its weights), the
+  // safety check (the aspect ratios at `next_`) and the convergence stop
+  // (the aspect ratios at `pos_`): none reads a value another wrote.
+  std::vector<double> face_values_;
+  double tolerance_ = 0; // the sweeps stop once no displacement changes by more
+  std::vector<Vec3> pos_, next_, d_;
+  std::vector<Index> home_, next_home_, moved_;
+  std::vector<unsigned char> guarded_, skipped_;
+  Ilsa_workspace workspace_;
+  bool limit_retries_ = false;
+  double retry_length_ = 0;
+  // settled_[v]: the length the neighbours of `v` have travelled since it
+  // settled, or -1 when `v` is not settled (one float per vertex: the largest
+  // meshes are at the memory bound of the user manual's "Performance").
+  std::vector<float> settled_;
+};
+
+/// Writes T_new back to `tm`: the adjustable vertices that moved, in the
+/// input's coordinates; fixed and unmoved vertices are not touched.
+template <class VertexDescriptor, class VertexPointMap>
+void write_back(const Flat_mesh& original, const std::vector<Vec3>& pos, const std::vector<Index>& adjustable,
+                const std::vector<VertexDescriptor>& vertex_list, VertexPointMap vpm) {
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  for (std::size_t v : adjustable) {
+    if (pos[v] == original.points[v]) continue;
+    const Vec3 p = original.to_input(pos[v]);
+    put(vpm, vertex_list[v], Point(p.x(), p.y(), p.z()));
+  }
+}
+
+} // namespace ILSA
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif

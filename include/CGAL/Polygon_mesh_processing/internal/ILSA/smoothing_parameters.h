@@ -1,0 +1,121 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The named parameters of smooth_surface_mesh_ilsa() that drive the
+// iterations, read and checked in one place (the classification's are read
+// by read_classification_parameters(), set_up.h; the defaults are in
+// defaults.h).
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_SMOOTHING_PARAMETERS_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_SMOOTHING_PARAMETERS_H
+
+#include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/penalty_adjustment.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+struct Smoothing_parameters {
+  std::size_t iterations = defaults::number_of_iterations; // the paper's max_global_iter_num
+  std::size_t sweeps = defaults::number_of_relaxation_steps;
+  double relax1 = defaults::relaxation;
+  Penalty_parameters penalty; // relax2, μ, wl, wa, and the sweeps
+  bool do_project = defaults::do_project;
+  bool use_safety = defaults::use_safety_constraints;
+  // The quality floor; without an explicit one, raised to the input's
+  // minimum aspect ratio when that is higher.
+  double quality_floor = defaults::quality_floor;
+  bool raise_floor_to_input_minimum = true;
+  bool quality_monotone = defaults::quality_monotone;
+  bool reject_worsening = defaults::reject_worsening_moves;
+  double fidelity_tolerance = defaults::fidelity_tolerance;
+  double minimum_gain = defaults::minimum_quality_gain;
+  double minimum_remaining_gain = defaults::minimum_remaining_gain;
+  double retry_distance = defaults::retry_distance;
+  bool verbose = false;
+  std::function<bool(double)> callback;
+
+  /// The floor the safety check applies (1 in the quality-monotone mode).
+  double floor_of_check() const { return quality_monotone ? 1. : quality_floor; }
+  /// Whether the run may stop before `iterations` (user manual, "Stopping early").
+  bool may_stop() const { return minimum_gain > 0 || minimum_remaining_gain > 0; }
+};
+
+/// Reads the smoothing parameters of `np`; throws `ILSA_error` for a value out of range.
+template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(const NamedParameters& np) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Smoothing_parameters p;
+  const auto iterations =
+      choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::number_of_iterations);
+  const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps),
+                                       defaults::number_of_relaxation_steps);
+  p.relax1 = choose_parameter(get_parameter(np, internal_np::ilsa_relaxation), defaults::relaxation);
+  Penalty_parameters& penalty = p.penalty;
+  penalty.relax2 =
+      choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), defaults::penalty_relaxation);
+  penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), defaults::penalty_mu);
+  penalty.length_weight = choose_parameter(get_parameter(np, internal_np::ilsa_length_weight), defaults::length_weight);
+  penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), defaults::area_weight);
+  p.do_project = choose_parameter(get_parameter(np, internal_np::do_project), defaults::do_project);
+  p.use_safety =
+      choose_parameter(get_parameter(np, internal_np::use_safety_constraints), defaults::use_safety_constraints);
+  p.raise_floor_to_input_minimum =
+      parameters::is_default_parameter<NamedParameters, internal_np::ilsa_quality_floor_t>::value;
+  p.quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), defaults::quality_floor);
+  p.quality_monotone =
+      choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), defaults::quality_monotone);
+  p.reject_worsening =
+      choose_parameter(get_parameter(np, internal_np::ilsa_reject_worsening_moves), defaults::reject_worsening_moves);
+  p.fidelity_tolerance =
+      choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), defaults::fidelity_tolerance);
+  p.minimum_gain =
+      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), defaults::minimum_quality_gain);
+  p.minimum_remaining_gain =
+      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_remaining_gain), defaults::minimum_remaining_gain);
+  p.retry_distance = choose_parameter(get_parameter(np, internal_np::ilsa_retry_distance), defaults::retry_distance);
+  p.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
+  p.callback = choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
+
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw ILSA_error(what);
+  };
+  require(p.quality_floor >= 0 && p.quality_floor < 1, "ilsa_quality_floor must be in [0, 1)");
+  require(p.fidelity_tolerance > 0, "ilsa_fidelity_tolerance must be positive (infinity disables the check)");
+  require(p.minimum_gain >= 0 && std::isfinite(p.minimum_gain),
+          "ilsa_minimum_quality_gain must be non-negative and finite (0 disables this stop)");
+  require(p.minimum_remaining_gain >= 0 && std::isfinite(p.minimum_remaining_gain),
+          "ilsa_minimum_remaining_gain must be non-negative and finite (0 disables this stop)");
+  require(p.retry_distance >= 0 && std::isfinite(p.retry_distance),
+          "ilsa_retry_distance must be non-negative and finite (0 retries every dropped move at once)");
+  require(double(iterations) >= 0 && double(iterations) <= 100000, "number_of_iterations must be in [0, 100000]");
+  require(double(sweeps) >= 1 && double(sweeps) <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
+  require(p.relax1 > 0 && p.relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
+  require(penalty.relax2 > 0 && penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]");
+  require(penalty.mu > 0 && std::isfinite(penalty.mu), "ilsa_penalty_mu must be positive and finite");
+  require(penalty.length_weight >= 0 && std::isfinite(penalty.length_weight),
+          "ilsa_length_weight must be non-negative and finite");
+  require(penalty.area_weight >= 0 && std::isfinite(penalty.area_weight),
+          "ilsa_area_weight must be non-negative and finite");
+  p.iterations = std::size_t(iterations);
+  p.sweeps = std::size_t(sweeps);
+  penalty.sweeps = p.sweeps;
+  return p;
+}
+
+} // namespace ILSA
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif
