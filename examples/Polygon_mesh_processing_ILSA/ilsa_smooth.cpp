@@ -409,7 +409,14 @@ int run(const Options& o) {
             << "moves: " << s.number_of_moves << " accepted, " << s.number_of_shortened_moves << " shortened, "
             << s.number_of_rejected_moves << " rejected by the safety check ("
             << s.number_of_moves_dropped_before_projection << " of them before projection), "
-            << s.number_of_settled_skips << " skipped as settled\n"
+            << s.number_of_settled_skips << " skipped as settled\n";
+  auto limits = [](const PMP::ILSA_move_limits& l) {
+    return std::to_string(l.flip_or_collapse) + " flip or collapse, " + std::to_string(l.quality_floor) +
+           " quality floor, " + std::to_string(l.worsening) + " worsening, " + std::to_string(l.fidelity) +
+           " fidelity, " + std::to_string(l.crease) + " crease";
+  };
+  std::cout << "limited by: dropped " << limits(s.moves_dropped_by) << "; shortened " << limits(s.moves_shortened_by)
+            << "\n"
             << std::setprecision(3) << "time: " << seconds << " s for " << s.number_of_iterations << " iterations ("
             << (o.threads == 1 || !tbb_available ? std::string("sequential") : std::to_string(o.threads) + " threads")
             << ")\n";

@@ -823,6 +823,45 @@ template <class Mesh> void test_worsening_pretest() {
   assert(unchecked.number_of_rejected_moves == 0 && unchecked.number_of_moves_dropped_before_projection == 0);
 }
 
+// What limits the smoothing (user manual, "What Limits the Smoothing"): the
+// moves dropped and shortened by the safety check are counted by test, the
+// counts add up to the totals, and each test is counted where it binds and
+// not where it is off.
+template <class Mesh> void test_move_limits() {
+  const Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
+  auto run = [&](const auto& np) {
+    Mesh m = original;
+    const auto s = PMP::smooth_surface_mesh_ilsa(m, np.number_of_iterations(3));
+    const auto &d = s.moves_dropped_by, &h = s.moves_shortened_by;
+    std::cout << "dropped by flip " << d.flip_or_collapse << ", floor " << d.quality_floor << ", worsening "
+              << d.worsening << ", fidelity " << d.fidelity << ", crease " << d.crease << "; shortened by flip "
+              << h.flip_or_collapse << ", floor " << h.quality_floor << ", worsening " << h.worsening << ", fidelity "
+              << h.fidelity << ", crease " << h.crease << std::endl;
+    assert(d.total() == s.number_of_rejected_moves - s.number_of_moves_dropped_before_projection);
+    assert(h.total() == s.number_of_shortened_moves);
+    // The worsening test drops a move at once: it never shortens one.
+    assert(h.worsening == 0);
+    return s;
+  };
+  const auto defaults = run(CGAL::parameters::default_values());
+  assert(defaults.moves_dropped_by.worsening > 0 &&
+         defaults.moves_dropped_by.fidelity + defaults.moves_shortened_by.fidelity > 0);
+  const auto tight = run(CGAL::parameters::ilsa_fidelity_tolerance(1e-5));
+  assert(tight.moves_shortened_by.fidelity + tight.moves_dropped_by.fidelity >
+         defaults.moves_shortened_by.fidelity + defaults.moves_dropped_by.fidelity);
+  assert(tight.moves_dropped_by.crease + tight.moves_shortened_by.crease > 0);
+  const auto monotone = run(CGAL::parameters::ilsa_quality_monotone(true));
+  assert(monotone.moves_dropped_by.quality_floor + monotone.moves_shortened_by.quality_floor > 0);
+  const auto unbounded = run(CGAL::parameters::ilsa_fidelity_tolerance(std::numeric_limits<double>::infinity())
+                                 .ilsa_reject_worsening_moves(false)
+                                 .ilsa_quality_floor(0.));
+  const auto &u = unbounded.moves_dropped_by, &v = unbounded.moves_shortened_by;
+  assert(u.fidelity + u.crease + u.worsening + u.quality_floor == 0);
+  assert(v.fidelity + v.crease + v.worsening + v.quality_floor == 0);
+  const auto unchecked = run(CGAL::parameters::use_safety_constraints(false));
+  assert(unchecked.moves_dropped_by.total() + unchecked.moves_shortened_by.total() == 0);
+}
+
 // Retrying dropped moves (user manual, "Retrying dropped moves"): a vertex
 // whose move the safety check dropped is skipped until its neighbours have
 // moved, also without the worsening test; never in the first iteration, never
@@ -1130,6 +1169,8 @@ int main() {
   test_degenerate_reference<Surface_mesh>();
   test_degenerate_reference<Polyhedron>();
   test_inlined_aspect_ratio();
+  test_move_limits<Surface_mesh>();
+  test_move_limits<Polyhedron>();
   test_collapsed_faces_open_right_way<Surface_mesh>();
   test_collapsed_faces_open_right_way<Polyhedron>();
   test_named_parameter_chaining<Surface_mesh>();

@@ -58,6 +58,20 @@ public:
 };
 
 /// \ingroup PkgPMPILSARef
+/// Moves of a call of `smooth_surface_mesh_ilsa()` counted by the test of the
+/// safety check that limited them: the last test a move failed in its
+/// iteration (user manual, "What Limits the Smoothing").
+struct ILSA_move_limits {
+  std::size_t flip_or_collapse = 0; ///< a triangle around the vertex would invert or collapse
+  std::size_t quality_floor = 0;    ///< the worst triangle of the star would get worse below the quality floor
+  std::size_t worsening = 0;        ///< the mean aspect ratio of the star would drop (`ilsa_reject_worsening_moves`)
+  std::size_t fidelity = 0;         ///< the surface would move farther than the fidelity tolerance from the input
+  std::size_t crease = 0;           ///< a feature line would move farther than the fidelity tolerance from the input's
+
+  std::size_t total() const { return flip_or_collapse + quality_floor + worsening + fidelity + crease; }
+};
+
+/// \ingroup PkgPMPILSARef
 /// What a call of `smooth_surface_mesh_ilsa()` did.
 struct ILSA_statistics {
   std::size_t number_of_smooth_vertices = 0;
@@ -76,6 +90,10 @@ struct ILSA_statistics {
   /// it) was left where it was, untested, its neighbours having moved too little since (user manual, "Retrying
   /// dropped moves"); neither moves nor rejected moves
   std::size_t number_of_settled_skips = 0;
+  /// the moves the safety check dropped after projection (`number_of_rejected_moves` less those dropped before
+  /// projection), by the test that dropped them
+  ILSA_move_limits moves_dropped_by;
+  ILSA_move_limits moves_shortened_by; ///< the shortened moves, by the test that shortened them last
 };
 
 } // namespace Polygon_mesh_processing

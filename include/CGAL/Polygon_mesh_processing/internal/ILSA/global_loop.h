@@ -168,6 +168,12 @@ private:
     stats.number_of_rejected_moves += counts.rejected + skipped_moves;
     stats.number_of_moves_dropped_before_projection += skipped_moves;
     stats.number_of_moves += moved_.size() - counts.rejected;
+    add(stats.moves_dropped_by, counts.rejected_by);
+    add(stats.moves_shortened_by, counts.shortened_by);
+  }
+  static void add(ILSA_move_limits& sum, const ILSA_move_limits& x) {
+    sum.flip_or_collapse += x.flip_or_collapse, sum.quality_floor += x.quality_floor, sum.worsening += x.worsening;
+    sum.fidelity += x.fidelity, sum.crease += x.crease;
   }
 
   Projector::Result project(std::size_t v, const Vec3& q, const Vec3& current, std::size_t home, bool guard) const {

@@ -94,6 +94,7 @@ public:
     face_round_.assign(m_.number_of_faces(), 0);
     deviation_round_.assign(m_.number_of_faces(), 0);
     bad_.assign(m_.number_of_vertices(), 0);
+    failed_test_.assign(m_.number_of_vertices(), 0);
     face_now_.assign(m_.number_of_faces(), std::numeric_limits<double>::infinity());
     vertex_round_.assign(m_.number_of_vertices(), 0);
     changed_round_.assign(m_.number_of_vertices(), 0);
@@ -114,6 +115,7 @@ public:
 
   struct Counts {
     std::size_t shortened = 0, rejected = 0;
+    ILSA_move_limits shortened_by, rejected_by; // by the last test each move failed
   };
 
   /// `previous`: accepted positions (and homes) before this iteration;
@@ -244,12 +246,33 @@ private:
       is_moved_[v] = 0;
       if (tries_[v] > halvings_) {
         ++counts.rejected;
+        ++limit_count(counts.rejected_by, v);
         dropped_in_[v] = call_;
-      } else if (tries_[v] > 0)
+      } else if (tries_[v] > 0) {
         ++counts.shortened;
+        ++limit_count(counts.shortened_by, v);
+      }
     }
     return counts;
   }
+
+  // The tests, as recorded in failed_test_ for the statistics.
+  enum class Test : unsigned char { flip_or_collapse, quality_floor, worsening, fidelity, crease };
+  std::size_t& limit_count(ILSA_move_limits& limits, std::size_t v) const {
+    switch (Test(failed_test_[v])) {
+    case Test::flip_or_collapse:
+      return limits.flip_or_collapse;
+    case Test::quality_floor:
+      return limits.quality_floor;
+    case Test::worsening:
+      return limits.worsening;
+    case Test::fidelity:
+      return limits.fidelity;
+    default:
+      return limits.crease;
+    }
+  }
+  void failed(std::size_t v, Test test) { bad_[v] = 1, failed_test_[v] = static_cast<unsigned char>(test); }
 
   // Whether a value computed in round `computed` of this call still holds,
   // the positions it depends on having last changed in round `changed`.
@@ -296,7 +319,7 @@ private:
       const std::size_t v = checking[i];
       bad_[v] = 0, above_floor_[v] = 0;
       for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
-        if (offends_[*f]) bad_[v] = 1;
+        if (offends_[*f]) failed(v, Test::flip_or_collapse);
       if (bad_[v] || !quality_tests) return;
       quality_tests_of(previous, next, v, quality_now);
     });
@@ -320,14 +343,15 @@ private:
         // A star at or above the floor before the move: if the halvings
         // fail too, the drop does not settle the vertex (user manual,
         // "Retrying dropped moves").
-        bad_[v] = 1, above_floor_[v] = !(before < quality_floor_);
+        failed(v, Test::quality_floor);
+        above_floor_[v] = !(before < quality_floor_);
         return;
       }
     }
     if (reject_worsening_ && now.mean < star_quality(next, v, previous[v]).mean) {
       // Dropped at once: a shorter step along a worsening direction rarely
       // helps, and each halving costs a re-projection.
-      bad_[v] = 1;
+      failed(v, Test::worsening);
       tries_[v] = static_cast<unsigned char>(halvings_);
     }
   }
@@ -371,7 +395,11 @@ private:
     });
     parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
       const std::size_t v = to_measure[i];
-      bad_[v] = deviates(previous, v) || crease_deviates(previous, previous_home, next, next_home, v);
+      bad_[v] = 0;
+      if (deviates(previous, v))
+        failed(v, Test::fidelity);
+      else if (crease_deviates(previous, previous_home, next, next_home, v))
+        failed(v, Test::crease);
     });
   }
 
@@ -704,6 +732,7 @@ private:
   std::vector<Vec3> degenerate_references_;        // their reference orientations
   std::vector<unsigned char> offends_;             // per face, in the current round
   std::vector<unsigned char> bad_;                 // per vertex: its move offends, in the current round
+  std::vector<unsigned char> failed_test_;         // per vertex: the Test its move failed last
   std::vector<unsigned char> tries_;               // halvings applied to a vertex's move (at most halvings_ + 1)
   std::vector<unsigned char> checked_;             // per vertex: already in the next list to check
   std::vector<unsigned char> queued_;              // per vertex: in the list for the fidelity tests
