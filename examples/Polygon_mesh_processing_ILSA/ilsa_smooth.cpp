@@ -66,6 +66,7 @@ struct Options {
   double minimum_gain = defaults::minimum_quality_gain;
   double minimum_remaining_gain = defaults::minimum_remaining_gain;
   double retry_distance = defaults::retry_distance;
+  double crease_contrast = defaults::crease_contrast;
   std::optional<double> kink_angle;    // the library's default (the feature angle) when not given
   std::optional<double> quality_floor; // the library's default when not given
   bool fix_unattached = defaults::fix_unattached_candidates, project = defaults::do_project;
@@ -103,6 +104,8 @@ const char* usage =
     "  --wa X                  area weight, >= 0 (default 0.1)\n"
     "  --feature-angle DEG     an edge is sharp when its face normals differ by more, [0,180) (default 20)\n"
     "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
+    "  --crease-contrast X     a sharp edge must bend X times more than the flatter other edge\n"
+    "                          of each of its faces, >= 0, 0: every one (default 0)\n"
     "  --kink-angle DEG        fix a crease vertex where the crease turns by more, [0,180],\n"
     "                          180 disables (default: the feature angle)\n"
     "  --no-project            do not project back onto the input surface\n"
@@ -170,6 +173,7 @@ Options parse(int argc, char** argv) {
        [&](const std::string& s) { o.minimum_remaining_gain = parse_number("--min-remaining-gain", s); }},
       {"--retry-distance", [&](const std::string& s) { o.retry_distance = parse_number("--retry-distance", s); }},
       {"--kink-angle", [&](const std::string& s) { o.kink_angle = parse_number("--kink-angle", s); }},
+      {"--crease-contrast", [&](const std::string& s) { o.crease_contrast = parse_number("--crease-contrast", s); }},
       {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
       {"--fidelity-tolerance",
        [&](const std::string& s) { o.fidelity_tolerance = parse_number("--fidelity-tolerance", s); }},
@@ -247,6 +251,7 @@ std::string in_flag_terms(std::string message) {
       {"ilsa_area_weight", "--wa"},
       {"ilsa_feature_angle", "--feature-angle"},
       {"ilsa_crease_kink_angle", "--kink-angle"},
+      {"ilsa_crease_contrast", "--crease-contrast"},
       {"ilsa_minimum_quality_gain", "--min-gain"},
       {"ilsa_minimum_remaining_gain", "--min-remaining-gain"},
       {"ilsa_retry_distance", "--retry-distance"},
@@ -285,7 +290,8 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
   PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
                               CGAL::parameters::ilsa_feature_angle(o.feature_angle)
                                   .ilsa_fix_unattached_candidates(o.fix_unattached)
-                                  .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle)));
+                                  .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
+                                  .ilsa_crease_contrast(o.crease_contrast));
   auto aspect_ratio = [](const Mesh& m, Mesh::Face_index f) {
     const auto h = halfedge(f, m);
     return PMP::triangle_aspect_ratio(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
@@ -326,6 +332,7 @@ auto smoothing_parameters(const Options& o, const std::function<bool(double)>& c
       .ilsa_feature_angle(o.feature_angle)
       .ilsa_fix_unattached_candidates(o.fix_unattached)
       .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
+      .ilsa_crease_contrast(o.crease_contrast)
       .ilsa_minimum_quality_gain(o.minimum_gain)
       .ilsa_minimum_remaining_gain(o.minimum_remaining_gain)
       .ilsa_retry_distance(o.retry_distance)
@@ -455,7 +462,8 @@ int run(const Options& o) {
     PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
                                 CGAL::parameters::ilsa_feature_angle(o.feature_angle)
                                     .ilsa_fix_unattached_candidates(o.fix_unattached)
-                                    .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle)));
+                                    .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
+                                    .ilsa_crease_contrast(o.crease_contrast));
     auto colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
     for (auto v : vertices(mesh)) {
       const PMP::ILSA_vertex_type t = types[v];

@@ -302,6 +302,49 @@ void test_two_sided_measure() {
   assert(PMP::mesh_fidelity_ilsa(original, original, np).max_crease_deviation <= 1e-15); // rounding only
 }
 
+// The crease contrast (user manual, "Crease contrast"): the creases of a CAD
+// model stay creases (the fandisk keeps its ridge vertices), the curvature of
+// a coarse organic mesh is no longer taken for creases (the elephant's
+// corners drop to less than a third), 0 is the paper's rule, and a negative or
+// non-finite contrast is rejected.
+template <class Mesh> void test_crease_contrast() {
+  auto types = [](const Mesh& m, double contrast) {
+    std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, PMP::ILSA_vertex_type> map;
+    const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(map),
+                                               CGAL::parameters::ilsa_crease_contrast(contrast));
+    return s;
+  };
+  const Mesh fandisk = read_mesh<Mesh>(data_file("fandisk.off"));
+  const Mesh elephant = read_mesh<Mesh>(data_file("elephant.off"));
+  const auto paper_cad = types(fandisk, 0.), contrasted_cad = types(fandisk, 5.);
+  const auto paper_organic = types(elephant, 0.), contrasted_organic = types(elephant, 5.);
+  std::cout << "crease contrast 5: fandisk ridge " << paper_cad.number_of_ridge_vertices << " -> "
+            << contrasted_cad.number_of_ridge_vertices << ", corner " << paper_cad.number_of_corner_vertices << " -> "
+            << contrasted_cad.number_of_corner_vertices << "; elephant corner "
+            << paper_organic.number_of_corner_vertices << " -> " << contrasted_organic.number_of_corner_vertices
+            << ", smooth " << paper_organic.number_of_smooth_vertices << " -> "
+            << contrasted_organic.number_of_smooth_vertices << std::endl;
+  assert(contrasted_cad.number_of_ridge_vertices == paper_cad.number_of_ridge_vertices &&
+         contrasted_cad.number_of_corner_vertices == paper_cad.number_of_corner_vertices);
+  assert(3 * contrasted_organic.number_of_corner_vertices < paper_organic.number_of_corner_vertices);
+  assert(contrasted_organic.number_of_smooth_vertices > 2 * paper_organic.number_of_smooth_vertices);
+  // The default is the paper's rule.
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, PMP::ILSA_vertex_type> map;
+  const auto defaults = PMP::classify_vertices_ilsa(elephant, boost::make_assoc_property_map(map));
+  assert(defaults.number_of_corner_vertices == paper_organic.number_of_corner_vertices &&
+         defaults.number_of_ridge_vertices == paper_organic.number_of_ridge_vertices);
+  for (const double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Mesh m = elephant;
+    bool thrown = false;
+    try {
+      PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_crease_contrast(bad));
+    } catch (const PMP::ILSA_error& e) {
+      thrown = std::string(e.what()).find("ilsa_crease_contrast") != std::string::npos;
+    }
+    assert(thrown && points_of(m) == points_of(elephant));
+  }
+}
+
 } // namespace
 
 int main() {
@@ -311,6 +354,8 @@ int main() {
   test_vertex_range<Polyhedron>();
   test_kink_rule_and_crease_bound_alone();
   test_two_sided_measure();
+  test_crease_contrast<Surface_mesh>();
+  test_crease_contrast<Polyhedron>();
   std::cout << "test_ilsa_creases: all checks passed\n";
   return 0;
 }

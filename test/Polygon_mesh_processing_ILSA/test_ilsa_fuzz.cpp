@@ -236,6 +236,11 @@ int main() {
     const double retry_draw = unit(retry_rng);
     const double retry = retry_draw < 0.4 ? 0.03 : retry_draw < 0.7 ? 0. : std::pow(10., -3 + 4 * unit(retry_rng));
 
+    // The crease contrast: the paper's rule (0) in half of the cases, else
+    // from 1 to 10, drawn from a generator of its own.
+    std::mt19937 contrast_rng(15485863u + unsigned(c));
+    const double contrast = unit(contrast_rng) < 0.5 ? 0. : 1. + 9. * unit(contrast_rng);
+
     // A fifth of the cases stop through the callback, after the iteration that
     // reaches `stop_after` (drawn from a generator of its own, so that the
     // other draws of each case stay as they were).
@@ -263,6 +268,7 @@ int main() {
                   .ilsa_quality_monotone(monotone)
                   .ilsa_reject_worsening_moves(reject_worsening)
                   .ilsa_crease_kink_angle(kink)
+                  .ilsa_crease_contrast(contrast)
                   .ilsa_fidelity_tolerance(tolerance)
                   .ilsa_minimum_quality_gain(gain)
                   .ilsa_minimum_remaining_gain(remaining_gain)
@@ -302,6 +308,7 @@ int main() {
       const auto classification = CGAL::parameters::ilsa_feature_angle(angle)
                                       .ilsa_fix_unattached_candidates(fix)
                                       .ilsa_crease_kink_angle(kink)
+                                      .ilsa_crease_contrast(contrast)
                                       .relax_constraints(relax)
                                       .vertex_is_constrained_map(boost::make_assoc_property_map(constrained_vertices));
       if (use_edge_map)
@@ -588,15 +595,16 @@ int main() {
                 << ", relax1 " << relax1 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa
                 << ", angle " << angle << ", fix " << fix << ", floor " << (default_floor ? -1. : floor)
                 << ", monotone " << monotone << ", reject worsening " << reject_worsening << ", kink " << kink
-                << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain " << remaining_gain
-                << ", retry distance " << retry << ", project " << project << ", safety " << safety << ", range "
-                << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map << ", relax "
-                << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges " << collapsed_edges
-                << ", zero-area input faces opened reversed " << reversed << ", distance " << f.max_vertex_distance
-                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
-                << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
-                << f.max_crease_deviation << ", parallel run identical " << same_in_parallel << ", same faces "
-                << same_faces << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
+                << ", crease contrast " << contrast << ", tolerance " << tolerance << ", gain " << gain
+                << ", remaining gain " << remaining_gain << ", retry distance " << retry << ", project " << project
+                << ", safety " << safety << ", range " << use_range << ", vertex map " << use_vertex_map
+                << ", edge map " << use_edge_map << ", relax " << relax << "): flipped " << f.number_of_flipped_faces
+                << ", collapsed edges " << collapsed_edges << ", zero-area input faces opened reversed " << reversed
+                << ", distance " << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite "
+                << non_finite << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
+                << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
+                << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
+                << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
                 << statistics.number_of_iterations << " iterations run, " << allowed << " allowed"
                 << ", ridge vertex off the creases " << ridge_off_crease << ", one-iteration worsening test "
                 << worsening_ok << ", vertices four edges apart " << isolated_ok << ", convergence stop "

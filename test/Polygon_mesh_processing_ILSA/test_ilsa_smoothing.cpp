@@ -1028,6 +1028,7 @@ void test_documented_defaults() {
                                               {"ilsa_area_weight", defaults::area_weight},
                                               {"ilsa_feature_angle", defaults::feature_angle},
                                               {"ilsa_fix_unattached_candidates", defaults::fix_unattached_candidates},
+                                              {"ilsa_crease_contrast", defaults::crease_contrast},
                                               {"relax_constraints", defaults::relax_constraints},
                                               {"do_project", defaults::do_project},
                                               {"use_safety_constraints", defaults::use_safety_constraints},
@@ -1109,6 +1110,7 @@ void test_documented_defaults() {
                                                       {"--wa", "ilsa_area_weight"},
                                                       {"--feature-angle", "ilsa_feature_angle"},
                                                       {"--fix-unattached", "ilsa_fix_unattached_candidates"},
+                                                      {"--crease-contrast", "ilsa_crease_contrast"},
                                                       {"--reject-worsening", "ilsa_reject_worsening_moves"},
                                                       {"--fidelity-tolerance", "ilsa_fidelity_tolerance"},
                                                       {"--retry-distance", "ilsa_retry_distance"}};
@@ -1126,7 +1128,7 @@ void test_documented_defaults() {
   std::cout << "documented defaults: " << checked << " statements agree with internal/ILSA/defaults.h (reference "
             << smoother << " + " << classification << " + " << quality << ", manual " << manual << ", tool " << tool
             << ")" << std::endl;
-  assert(smoother >= 15 && classification >= 3 && quality >= 2 && manual >= 13 && tool == 14);
+  assert(smoother >= 15 && classification >= 3 && quality >= 2 && manual >= 13 && tool == 15);
 }
 
 int main() {

@@ -33,8 +33,11 @@ namespace Polygon_mesh_processing {
  * ridge vertex, with one or more than two a corner, with none a corner or a
  * smooth vertex (`ilsa_fix_unattached_candidates`). A vertex with two sharp
  * edges where the crease turns by more than `ilsa_crease_kink_angle` is a
- * corner too (a kink). Isolated and non-manifold
- * vertices are corners.
+ * corner too (a kink). With a crease contrast `c` > 0 (`ilsa_crease_contrast`),
+ * such an edge is sharp only if its angle is at least `c` times that of the
+ * flatter of the two other edges of each of its faces, and a candidate left
+ * with fewer than two sharp edges by this rule is a smooth vertex. Isolated and
+ * non-manifold vertices are corners.
  *
  * @tparam TriangleMesh a model of `VertexListGraph`, `EdgeListGraph`, `FaceListGraph` and `HalfedgeGraph`
  * @tparam VertexTypeMap a model of `WritablePropertyMap` with `vertex_descriptor` as key and
@@ -61,6 +64,15 @@ namespace Polygon_mesh_processing {
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
  *     \cgalParamDescription{whether a ridge candidate with no sharp edge is a corner (the paper's rule) or a smooth
  * vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_crease_contrast}
+ *     \cgalParamDescription{an edge whose face normals are more than `ilsa_feature_angle` apart is sharp only if
+ * their angle is at least this many times that of the flatter of the two other edges of each of its faces: on a
+ * crease of a CAD model one of these lies in a smooth part, on a coarse curved surface they bend as much as the edge
+ * (user manual, "Crease contrast"; not in the paper). `0` makes every such edge between two ridge candidates sharp,
+ * the paper's rule. Ignored with an `edge_is_constrained_map`}
+ *     \cgalParamType{`double`, non-negative and finite}
+ *     \cgalParamDefault{`0`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_crease_kink_angle}
  *     \cgalParamDescription{a vertex with two sharp edges where the crease turns by more than this angle (degrees) is a
  * corner, counted in `number_of_kink_vertices`; `180`: the paper's rule}

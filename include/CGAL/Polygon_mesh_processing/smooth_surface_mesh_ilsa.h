@@ -160,6 +160,15 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
  *     \cgalParamDescription{whether a ridge candidate with no sharp edge is fixed as a corner (the paper's rule) or
  * smoothed as a smooth vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_crease_contrast}
+ *     \cgalParamDescription{an edge whose face normals are more than `ilsa_feature_angle` apart is sharp only if
+ * their angle is at least this many times that of the flatter of the two other edges of each of its faces: on a
+ * crease of a CAD model one of these lies in a smooth part, on a coarse curved surface they bend as much as the edge
+ * (user manual, "Crease contrast"; not in the paper). `0` makes every such edge between two ridge candidates sharp,
+ * the paper's rule. Ignored with an `edge_is_constrained_map`}
+ *     \cgalParamType{`double`, non-negative and finite}
+ *     \cgalParamDefault{`0`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_crease_kink_angle}
  *     \cgalParamDescription{a vertex with two sharp (or constrained) edges is fixed like a corner when the crease
  * turns there by more than this angle, in degrees (the angle between the directions of its two edges; a straight

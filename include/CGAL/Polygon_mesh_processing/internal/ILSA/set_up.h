@@ -22,6 +22,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,12 @@ Classification_options read_classification_parameters(
   if (!(options.kink_angle_degrees >= 0 && options.kink_angle_degrees <= 180))
     throw ILSA_error("ilsa_crease_kink_angle must be in [0, 180] degrees, got " +
                      std::to_string(options.kink_angle_degrees));
+
+  options.crease_contrast =
+      choose_parameter(get_parameter(np, internal_np::ilsa_crease_contrast), defaults::crease_contrast);
+  if (!(options.crease_contrast >= 0 && std::isfinite(options.crease_contrast)))
+    throw ILSA_error("ilsa_crease_contrast must be non-negative and finite (0: the paper's rule), got " +
+                     std::to_string(options.crease_contrast));
 
   const auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                     Static_boolean_property_map<vertex_descriptor, false>());

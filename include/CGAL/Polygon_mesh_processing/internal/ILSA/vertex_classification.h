@@ -14,7 +14,9 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -74,9 +76,55 @@ struct Classification_options {
   bool fix_unattached_candidates = defaults::fix_unattached_candidates;
   // A crease turning by more than this at a vertex makes it a corner (by default the feature angle).
   double kink_angle_degrees = defaults::feature_angle;
+  // A feature edge between candidates is sharp only if its angle is at least this times the angle of the flatter
+  // of the two other edges of each of its faces (user manual, "Crease contrast"); 0: every one is (the paper).
+  double crease_contrast = defaults::crease_contrast;
   const std::vector<unsigned char>* constrained_vertices = nullptr; // user's vertex_is_constrained_map
   const std::vector<unsigned char>* constrained_edges = nullptr;    // user's edge_is_constrained_map
 };
+
+/// The crease contrast (user manual, "Crease contrast"): keeps a sharp edge
+/// only if its angle between face normals is at least `contrast` times the
+/// angle of the flatter of the two other edges of each of its faces. On a
+/// crease of a CAD model at least one of these edges lies in a smooth part of
+/// the surface; on a coarse curved surface they bend as much as the edge.
+/// `curved` is set for the ends of the edges it drops.
+inline void keep_contrasted_creases(const Flat_mesh& m, const Set_up_incidences& incidences,
+                                    const std::vector<Vec3>& face_normals, double contrast,
+                                    std::vector<unsigned char>& sharp_edge, std::vector<unsigned char>& curved) {
+  const std::size_t ne = m.edges.size();
+  auto angle_of = [&](std::size_t e) {
+    const auto& fs = incidences.edge_faces[e];
+    if (fs[0] == npos || fs[1] == npos) return 0.;
+    return std::acos((std::max)(-1., (std::min)(1., face_normals[fs[0]].dot(face_normals[fs[1]]))));
+  };
+  // The edge from `a` to `b` (vertex_neighbors is sorted), or npos.
+  auto edge_between = [&](Index a, Index b) {
+    const Index* first = m.vertex_neighbors.first(a);
+    const Index* last = m.vertex_neighbors.last(a);
+    const Index* found = std::lower_bound(first, last, b);
+    return found != last && *found == b ? m.vertex_edges.items[m.vertex_edges.begin[a] + std::size_t(found - first)]
+                                        : npos;
+  };
+  std::vector<double> angle(ne);
+  for (std::size_t e = 0; e < ne; ++e) angle[e] = angle_of(e);
+  // Per face: the angle of the flatter of its two edges other than `e`.
+  auto wing = [&](std::size_t f, std::size_t e) {
+    double flatter = std::numeric_limits<double>::infinity();
+    const auto& t = m.faces[f];
+    for (int k = 0; k < 3; ++k) {
+      const Index g = edge_between(t[k], t[(k + 1) % 3]);
+      if (g != npos && g != e) flatter = (std::min)(flatter, angle[g]);
+    }
+    return flatter == std::numeric_limits<double>::infinity() ? 0. : flatter;
+  };
+  for (std::size_t e = 0; e < ne; ++e) {
+    if (!sharp_edge[e]) continue;
+    const auto& fs = incidences.edge_faces[e];
+    const double around = (std::max)(wing(fs[0], e), wing(fs[1], e));
+    if (angle[e] < contrast * around) sharp_edge[e] = 0, curved[m.edges[e][0]] = curved[m.edges[e][1]] = 1;
+  }
+}
 
 /// Classifies the vertices of `m` (paper §3), user constraints overriding.
 /// `incidences`: those of `m` (read here only).
@@ -135,6 +183,12 @@ inline Vertex_classification classify(const Flat_mesh& m, const Set_up_incidence
     c.feature_edge[e] = face_normals[fs[0]].dot(face_normals[fs[1]]) < sharp_cosine;
     sharp_edge[e] = c.feature_edge[e] && ridge_candidate[ends[0]] && ridge_candidate[ends[1]];
   }
+  // Candidates that had a sharp edge the crease contrast dropped (curvature, not a crease).
+  std::vector<unsigned char> curved;
+  if (!opt.constrained_edges && opt.crease_contrast > 0) {
+    curved.assign(nv, 0);
+    keep_contrasted_creases(m, incidences, face_normals, opt.crease_contrast, sharp_edge, curved);
+  }
   for (std::size_t e = 0; e < ne; ++e) c.feature_edge[e] = c.feature_edge[e] || sharp_edge[e];
 
   // Attached-sharp nodes decide between ridge and corner (paper §3), user edges overriding.
@@ -152,6 +206,9 @@ inline Vertex_classification classify(const Flat_mesh& m, const Set_up_incidence
     }
     const bool candidate = opt.constrained_edges ? count > 0 : bool(ridge_candidate[v]);
     if (!candidate) continue;
+    // Where the crease contrast dropped sharp edges, fewer than two left: a
+    // vertex of a curved surface (or the end of a crease fading into it).
+    if (!curved.empty() && curved[v] && count < 2) continue;
     if (count == 2 && is_kink(m.points[v], m.points[attached_sharp[v][0]], m.points[attached_sharp[v][1]])) {
       c.type[v] = ILSA_vertex_type::Corner;
       ++c.number_of_kinks;
