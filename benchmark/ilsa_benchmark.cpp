@@ -3,6 +3,7 @@
 //
 //   ilsa_benchmark [--runs N] [--peer-iterations N] [MESH ...]
 //   ilsa_benchmark --scaling N
+//   ilsa_benchmark --pareto [--peer-iterations N] [MESH ...]
 //
 // Without meshes: every bundled mesh, plus ../shared/data when it exists.
 // Prints one Markdown table row per (mesh, method): quality (aspect ratio q
@@ -16,6 +17,13 @@
 // to N times and perturbed, time per face and peak memory of ILSA and CGAL
 // tangential relaxation, each run once in a child process of its own; then
 // the horse again with its vertices and faces in a random order.
+// --pareto prints instead the comparison at the same distance (user manual,
+// "What Limits the Smoothing"): CGAL tangential relaxation (unconstrained,
+// N iterations) and its Hausdorff distance H to the input; then ILSA with its
+// defaults but the fidelity tolerance set to H, and the same with a crease
+// contrast of 5; mean q, Hausdorff distance and its ratio to H, flipped faces.
+// Also ILSA with every default: its Hausdorff distance over the default
+// fidelity tolerance. One run each (no time measured).
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -220,11 +228,53 @@ void run_scaling(const std::string& self, unsigned max_level) {
 
 } // namespace
 
+// The --pareto table (see the top of the file).
+void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations) {
+  const double default_tolerance = PMP::internal::ILSA::defaults::fidelity_tolerance;
+  std::cout << "| mesh | tangential relaxation: q / H / flipped | ILSA, tolerance H: q / H (/ peer's H) / flipped | "
+               "ILSA, tolerance H, crease contrast 5: q / H (/ peer's H) / flipped | ILSA q - peer q (contrast 5) | "
+               "ILSA defaults: H / tolerance |\n|---|---|---|---|---|---|\n";
+  for (const std::string& file : files) {
+    Mesh input;
+    if (!CGAL::IO::read_polygon_mesh(file, input) || is_empty(input) || !CGAL::is_triangle_mesh(input)) {
+      std::cerr << "skipping " << file << ": not a readable triangle mesh\n";
+      continue;
+    }
+    struct Result {
+      double q, h;
+      std::size_t flipped;
+    };
+    auto measure = [&](const Mesh& m) {
+      const auto f = PMP::mesh_fidelity_ilsa(input, m, CGAL::parameters::ilsa_feature_angle(feature_angle));
+      return Result{PMP::mesh_quality_ilsa(m).mean_aspect_ratio, f.hausdorff_distance, f.number_of_flipped_faces};
+    };
+    Mesh peer = input;
+    PMP::tangential_relaxation(peer, CGAL::parameters::number_of_iterations(peer_iterations));
+    const Result p = measure(peer);
+    auto ilsa = [&](double contrast) {
+      Mesh m = input;
+      PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(
+          m, CGAL::parameters::ilsa_fidelity_tolerance(p.h).ilsa_crease_contrast(contrast));
+      return measure(m);
+    };
+    const Result a = ilsa(0.), b = ilsa(5.);
+    Mesh defaults = input;
+    PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(defaults);
+    const Result d = measure(defaults);
+    std::printf("| %s | %.4f / %.2e / %zu | %.4f / %.2e (%.2f) / %zu | %.4f / %.2e (%.2f) / %zu | %+.4f (%+.4f) | "
+                "%.2e / %.2f |\n",
+                std::filesystem::path(file).filename().string().c_str(), p.q, p.h, p.flipped, a.q, a.h, a.h / p.h,
+                a.flipped, b.q, b.h, b.h / p.h, b.flipped, a.q - p.q, b.q - p.q, d.h, d.h / default_tolerance);
+    std::fflush(stdout);
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--child") return run_child(argv[2], argv[3]);
   int runs = 5;
   unsigned peer_iterations = 10;
   int scaling = -1; // --scaling N: the scaling table up to N subdivisions, and nothing else
+  bool pareto = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -232,6 +282,8 @@ int main(int argc, char** argv) {
       runs = std::max(1, std::atoi(argv[++i]));
     else if (a == "--scaling" && i + 1 < argc)
       scaling = std::max(0, std::atoi(argv[++i]));
+    else if (a == "--pareto")
+      pareto = true;
     else if (a == "--peer-iterations" && i + 1 < argc)
       peer_iterations = unsigned(std::max(1, std::atoi(argv[++i])));
     else
@@ -242,6 +294,10 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (files.empty()) files = default_meshes();
+  if (pareto) {
+    run_pareto(files, peer_iterations);
+    return 0;
+  }
 
 #ifdef CGAL_PMP_USE_CERES_SOLVER
   const bool ceres = true;
