@@ -263,33 +263,19 @@ inline Locality_order locality_order(std::size_t n, const std::vector<std::array
   return o;
 }
 
-/// Builds the flat copy of `tm`. `vertex_list` receives the vertex descriptors in
-/// index order, `vertex_index` the flat numbering of the vertices (its `map` must
-/// be set), `edge_list` the edge descriptors, `incidences` what only the set-up
-/// reads. `face_index_map` numbers the faces.
-/// Throws `ILSA_error` for a non-triangle face, a non-finite coordinate or an
-/// index map that is not one to one; `tm` is only read.
-template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
-Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
-                          std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
-                          Flat_indices<VertexIndexMap>& vertex_index, const FaceIndexMap& face_index_map,
-                          std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list,
-                          Set_up_incidences& incidences) {
-  using GT = boost::graph_traits<TriangleMesh>;
-  using vertex_descriptor = typename GT::vertex_descriptor;
-  using face_descriptor = typename GT::face_descriptor;
+/// Every index, and every item count of an adjacency, must fit an `Index`.
+inline void require_indexable(std::size_t n, const char* what) {
+  if (n >= std::size_t(npos))
+    throw ILSA_error(std::string("the mesh has too many ") + what + " (" + std::to_string(n) + "; at most 2^32 - 2)");
+}
 
-  Flat_mesh m;
-  // Every index, and every item count of an adjacency, must fit an `Index`.
-  auto require_indexable = [](std::size_t n, const char* what) {
-    if (n >= std::size_t(npos))
-      throw ILSA_error(std::string("the mesh has too many ") + what + " (" + std::to_string(n) + "; at most 2^32 - 2)");
-  };
-  vertex_list.assign(vertices(tm).begin(), vertices(tm).end());
+/// The coordinates of the vertices of `vertex_list`, checked finite; sets the
+/// bounding-box centre and diagonal of `m` (the points are normalised once
+/// renumbered).
+template <class VertexPointMap, class VertexDescriptor>
+std::vector<Vec3> read_points(const VertexPointMap& vpm, const std::vector<VertexDescriptor>& vertex_list,
+                              Flat_mesh& m) {
   const std::size_t nv = vertex_list.size();
-  require_indexable(nv, "vertices");
-  number_in_order(vertex_index, vertex_list, "vertex_index_map");
-
   std::vector<Vec3> raw(nv);
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 hi = -lo;
@@ -306,18 +292,22 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
     const double diagonal = (hi - lo).norm();
     m.scale = diagonal > 0 ? diagonal : 1.;
   }
+  return raw;
+}
 
-  // The faces, with the vertices numbered in the order of `vertices(tm)` for now.
-  const std::vector<face_descriptor> face_list(faces(tm).begin(), faces(tm).end());
-  require_indexable(3 * face_list.size(), "face corners");
-  Flat_indices<FaceIndexMap> face_index{face_index_map, {}};
-  number_in_order(face_index, face_list, "face_index_map");
+/// The faces of `tm` (`face_list`), with the vertices numbered in the order of
+/// `vertices(tm)`; throws for a face that is not a triangle.
+template <class TriangleMesh, class VertexIndices>
+std::vector<std::array<Index, 3>>
+read_faces(const TriangleMesh& tm,
+           const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_list,
+           const VertexIndices& vertex_index) {
   std::vector<std::array<Index, 3>> input_faces;
   input_faces.reserve(face_list.size());
-  for (face_descriptor f : face_list) {
+  for (auto f : face_list) {
     std::array<Index, 3> t{};
     std::size_t k = 0;
-    for (vertex_descriptor v : vertices_around_face(halfedge(f, tm), tm)) {
+    for (auto v : vertices_around_face(halfedge(f, tm), tm)) {
       if (k < 3) t[k] = Index(vertex_index(v));
       ++k;
     }
@@ -326,17 +316,25 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
                        " vertices; only triangle meshes are supported (triangulate first)");
     input_faces.push_back(t);
   }
+  return input_faces;
+}
 
-  // Renumbering for memory locality (user manual, "Performance"): every stage
-  // visits the vertices in index order and reads their faces and neighbours,
-  // so neighbours should have close indices. Vertices in breadth-first order
-  // over the faces (each component from its first vertex in the order of
-  // `vertices(tm)`), faces in the order they are first reached. The order
-  // depends only on the order of the vertices and faces, not on which corner
-  // the graph starts a face at.
+/// Renumbering for memory locality (user manual, "Performance"): every stage
+/// visits the vertices in index order and reads their faces and neighbours,
+/// so neighbours should have close indices. Vertices in breadth-first order
+/// over the faces (each component from its first vertex in the order of
+/// `vertices(tm)`), faces in the order they are first reached. The order
+/// depends only on the order of the vertices and faces, not on which corner
+/// the graph starts a face at. Sets the points (normalised) and faces of `m`,
+/// and renumbers `vertex_list` and the flat indices.
+template <class VertexDescriptor, class VertexIndices, class FaceIndices>
+void renumber_for_locality(const std::vector<Vec3>& raw, const std::vector<std::array<Index, 3>>& input_faces,
+                           std::vector<VertexDescriptor>& vertex_list, VertexIndices& vertex_index,
+                           FaceIndices& face_index, Flat_mesh& m) {
+  const std::size_t nv = vertex_list.size();
   const Locality_order order = locality_order(nv, input_faces);
   {
-    std::vector<typename GT::vertex_descriptor> renumbered(nv);
+    std::vector<VertexDescriptor> renumbered(nv);
     m.points.resize(nv);
     for (std::size_t i = 0; i < nv; ++i) {
       renumbered[i] = vertex_list[order.vertices[i]];
@@ -351,13 +349,18 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
     const auto& t = input_faces[order.faces[f]];
     m.faces[f] = {order.vertex_number[t[0]], order.vertex_number[t[1]], order.vertex_number[t[2]]};
   }
-  std::vector<std::array<Index, 3>>().swap(input_faces);
-  m.vertex_faces.assign_faces(nv, m.faces);
+}
 
-  // Edges in a canonical order (by endpoint indices, lower index first, the
-  // face on the lower-to-higher halfedge first), whatever order the graph
-  // lists them in: meshes of different types with the same vertices and faces
-  // give bit-identical results.
+/// The edges of `tm` in a canonical order (by endpoint indices, lower index
+/// first, the face on the lower-to-higher halfedge first), whatever order the
+/// graph lists them in: meshes of different types with the same vertices and
+/// faces give bit-identical results. Sets the edges of `m`, the faces of each
+/// edge and the border vertices in `incidences`, the descriptors in `edge_list`.
+template <class TriangleMesh, class VertexIndices, class FaceIndices>
+void read_edges(const TriangleMesh& tm, const VertexIndices& vertex_index, const FaceIndices& face_index, Flat_mesh& m,
+                Set_up_incidences& incidences,
+                std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list) {
+  using GT = boost::graph_traits<TriangleMesh>;
   struct Edge_record {
     Index a, b, f0, f1, descriptor;
   };
@@ -368,7 +371,7 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   for (std::size_t k = 0; k < graph_edges.size(); ++k) {
     auto h = halfedge(graph_edges[k], tm);
     if (vertex_index(source(h, tm)) > vertex_index(target(h, tm))) h = opposite(h, tm);
-    const face_descriptor f0 = face(h, tm), f1 = face(opposite(h, tm), tm);
+    const auto f0 = face(h, tm), f1 = face(opposite(h, tm), tm);
     records.push_back({Index(vertex_index(source(h, tm))), Index(vertex_index(target(h, tm))),
                        f0 == GT::null_face() ? npos : Index(face_index(f0)),
                        f1 == GT::null_face() ? npos : Index(face_index(f1)), Index(k)});
@@ -377,7 +380,7 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
     return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
   });
 
-  incidences.on_border.assign(nv, 0);
+  incidences.on_border.assign(m.number_of_vertices(), 0);
   edge_list.clear();
   m.edges.reserve(records.size());
   incidences.edge_faces.clear();
@@ -389,10 +392,13 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
     incidences.edge_faces.push_back({r.f0, r.f1});
     edge_list.push_back(graph_edges[r.descriptor]);
   }
-  std::vector<Edge_record>().swap(records);
-  // Edges around each vertex (bucketed in edge order), each vertex's few
-  // sorted by their other end, then by edge where two edges join the same two
-  // vertices: one-ring neighbours in increasing index order, at linear cost.
+}
+
+/// Edges around each vertex (bucketed in edge order), each vertex's few
+/// sorted by their other end, then by edge where two edges join the same two
+/// vertices: one-ring neighbours in increasing index order, at linear cost.
+inline void build_vertex_adjacency(Flat_mesh& m) {
+  const std::size_t nv = m.number_of_vertices();
   m.vertex_edges.assign(nv, [&](auto emit) {
     for (std::size_t e = 0; e < m.edges.size(); ++e) emit(m.edges[e][0], e), emit(m.edges[e][1], e);
   });
@@ -406,16 +412,53 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
               [&](Index x, Index y) { return std::make_pair(other_end(x), x) < std::make_pair(other_end(y), y); });
     for (std::size_t j = first; j < last; ++j) m.vertex_neighbors.items[j] = other_end(items[j]);
   }
+}
 
-  // A vertex whose faces do not all lie in one umbrella is non-manifold.
-  incidences.non_manifold.assign(nv, 0);
-  for (std::size_t i = 0; i < nv; ++i) {
+/// A vertex whose faces do not all lie in one umbrella is non-manifold.
+template <class TriangleMesh>
+void mark_non_manifold(const TriangleMesh& tm,
+                       const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
+                       const Flat_mesh& m, Set_up_incidences& incidences) {
+  using GT = boost::graph_traits<TriangleMesh>;
+  incidences.non_manifold.assign(m.number_of_vertices(), 0);
+  for (std::size_t i = 0; i < m.number_of_vertices(); ++i) {
     if (m.vertex_faces.size(i) == 0) continue;
     std::size_t umbrella = 0;
     for (auto h : halfedges_around_target(halfedge(vertex_list[i], tm), tm))
       if (face(h, tm) != GT::null_face()) ++umbrella;
     if (umbrella != m.vertex_faces.size(i)) incidences.non_manifold[i] = 1;
   }
+}
+
+/// Builds the flat copy of `tm`. `vertex_list` receives the vertex descriptors in
+/// index order, `vertex_index` the flat numbering of the vertices (its `map` must
+/// be set), `edge_list` the edge descriptors, `incidences` what only the set-up
+/// reads. `face_index_map` numbers the faces.
+/// Throws `ILSA_error` for a non-triangle face, a non-finite coordinate or an
+/// index map that is not one to one; `tm` is only read.
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
+Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
+                          std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_list,
+                          Flat_indices<VertexIndexMap>& vertex_index, const FaceIndexMap& face_index_map,
+                          std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list,
+                          Set_up_incidences& incidences) {
+  Flat_mesh m;
+  vertex_list.assign(vertices(tm).begin(), vertices(tm).end());
+  require_indexable(vertex_list.size(), "vertices");
+  number_in_order(vertex_index, vertex_list, "vertex_index_map");
+  Flat_indices<FaceIndexMap> face_index{face_index_map, {}};
+  {
+    const std::vector<Vec3> raw = read_points(vpm, vertex_list, m);
+    const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_list(faces(tm).begin(),
+                                                                                             faces(tm).end());
+    require_indexable(3 * face_list.size(), "face corners");
+    number_in_order(face_index, face_list, "face_index_map");
+    renumber_for_locality(raw, read_faces(tm, face_list, vertex_index), vertex_list, vertex_index, face_index, m);
+  }
+  m.vertex_faces.assign_faces(m.number_of_vertices(), m.faces);
+  read_edges(tm, vertex_index, face_index, m, incidences, edge_list);
+  build_vertex_adjacency(m);
+  mark_non_manifold(tm, vertex_list, m, incidences);
   return m;
 }
 

@@ -126,17 +126,66 @@ inline void keep_contrasted_creases(const Flat_mesh& m, const Set_up_incidences&
   }
 }
 
-/// Classifies the vertices of `m` (paper §3), user constraints overriding.
-/// `incidences`: those of `m` (read here only).
-inline Vertex_classification classify(const Flat_mesh& m, const Set_up_incidences& incidences,
-                                      const Classification_options& opt) {
-  const std::size_t nv = m.number_of_vertices(), ne = m.edges.size();
-  const double pi = 3.14159265358979323846;
-  // Normal deviation of two face groups meeting at the feature angle, and the
-  // length |x| such a fold gives the discrete normal (user manual, classification).
-  const double deviation = feature_normal_deviation(opt.feature_angle_degrees);
-  const double candidate_length = 1. / std::cos(deviation / 2.);
+/// The intermediate results of classify().
+struct Classification_work {
+  std::vector<Vec3> face_normals;
+  std::vector<unsigned char> ridge_candidate; // per vertex: |x| above the feature threshold
+  std::vector<unsigned char> sharp_edge;      // per edge (paper §3 or the user's edge map)
+  std::vector<unsigned char> curved;          // per vertex, with a crease contrast: lost a sharp edge to it
+};
+
+/// Boundary vertices, isolated and non-manifold vertices (corners), and the
+/// ridge candidates among the others: the discrete normal longer than a fold
+/// at the feature angle makes it (user manual, classification).
+inline void mark_fixed_and_candidates(const Flat_mesh& m, const Set_up_incidences& incidences,
+                                      const Classification_options& opt, Vertex_classification& c,
+                                      Classification_work& w) {
+  const double candidate_length = 1. / std::cos(feature_normal_deviation(opt.feature_angle_degrees) / 2.);
+  for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
+    if (incidences.on_border[v])
+      c.type[v] = ILSA_vertex_type::Boundary;
+    else if (m.vertex_faces.size(v) == 0 || incidences.non_manifold[v])
+      c.type[v] = ILSA_vertex_type::Corner;
+    else if (!opt.constrained_edges)
+      w.ridge_candidate[v] = discrete_normal(m, w.face_normals, v).norm() > candidate_length;
+  }
+}
+
+/// Feature edges (face normals more than the feature angle apart) and sharp
+/// edges (feature edges between two ridge candidates, paper §3, or the user's
+/// constrained edges), with the crease contrast when it is set.
+inline void mark_feature_and_sharp_edges(const Flat_mesh& m, const Set_up_incidences& incidences,
+                                         const Classification_options& opt, Vertex_classification& c,
+                                         Classification_work& w) {
   const double sharp_cosine = feature_cosine(opt.feature_angle_degrees);
+  for (std::size_t e = 0; e < m.edges.size(); ++e) {
+    if (opt.constrained_edges) {
+      w.sharp_edge[e] = (*opt.constrained_edges)[e];
+      continue;
+    }
+    const auto& ends = m.edges[e];
+    const auto& fs = incidences.edge_faces[e];
+    if (fs[0] == npos || fs[1] == npos) continue;
+    // Dihedral angle below θ_f <=> face normals more than π − θ_f apart. Such
+    // an edge is sharp (a crease edge) only between two ridge candidates
+    // (paper §3); the others are still feature edges the safety check keeps.
+    c.feature_edge[e] = w.face_normals[fs[0]].dot(w.face_normals[fs[1]]) < sharp_cosine;
+    w.sharp_edge[e] = c.feature_edge[e] && w.ridge_candidate[ends[0]] && w.ridge_candidate[ends[1]];
+  }
+  if (!opt.constrained_edges && opt.crease_contrast > 0) {
+    w.curved.assign(m.number_of_vertices(), 0);
+    keep_contrasted_creases(m, incidences, w.face_normals, opt.crease_contrast, w.sharp_edge, w.curved);
+  }
+  for (std::size_t e = 0; e < m.edges.size(); ++e) c.feature_edge[e] = c.feature_edge[e] || w.sharp_edge[e];
+}
+
+/// The types of the candidates from their sharp edges (paper §3, user edges
+/// overriding): two make a ridge vertex, or a corner where the crease turns
+/// by more than the kink angle; one or more than two a corner; none a corner
+/// or a smooth vertex (`fix_unattached_candidates`).
+inline void type_candidates(const Flat_mesh& m, const Classification_options& opt, const Classification_work& w,
+                            Vertex_classification& c) {
+  const double pi = 3.14159265358979323846;
   // Kink (user manual, "Crease kinks"): the crease's direction turns at `v`
   // by more than the kink angle, i.e. its two sharp edges meet at less than
   // 180° minus it. A vertex there is the tip of the crease: sliding would cut
@@ -147,69 +196,25 @@ inline Vertex_classification classify(const Flat_mesh& m, const Set_up_incidence
     const double la = (a - v).norm(), lb = (b - v).norm();
     return la == 0 || lb == 0 || (a - v).dot(b - v) > kink_cosine * la * lb;
   };
-
-  Vertex_classification c;
-  c.type.assign(nv, ILSA_vertex_type::Smooth);
-  c.crease_of_edge.assign(ne, npos);
-  c.feature_edge.assign(ne, 0);
-  c.attached_edges.assign(nv, {npos, npos});
-  std::vector<unsigned char> ridge_candidate(nv, 0);                  // |x| above the feature threshold
-  std::vector<unsigned char> sharp_edge(ne, 0);                       // per edge (paper §3 or the user's edge map)
-  std::vector<std::array<Index, 2>> attached_sharp(nv, {npos, npos}); // a candidate's first two attached-sharp nodes
-
-  std::vector<Vec3> face_normals;
-  compute_face_normals(m, m.points, face_normals);
-
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (incidences.on_border[v])
-      c.type[v] = ILSA_vertex_type::Boundary;
-    else if (m.vertex_faces.size(v) == 0 || incidences.non_manifold[v])
-      c.type[v] = ILSA_vertex_type::Corner;
-    else if (!opt.constrained_edges)
-      ridge_candidate[v] = discrete_normal(m, face_normals, v).norm() > candidate_length;
-  }
-
-  for (std::size_t e = 0; e < ne; ++e) {
-    if (opt.constrained_edges) {
-      sharp_edge[e] = (*opt.constrained_edges)[e];
-      continue;
-    }
-    const auto& ends = m.edges[e];
-    const auto& fs = incidences.edge_faces[e];
-    if (fs[0] == npos || fs[1] == npos) continue;
-    // Dihedral angle below θ_f <=> face normals more than π − θ_f apart. Such
-    // an edge is sharp (a crease edge) only between two ridge candidates
-    // (paper §3); the others are still feature edges the safety check keeps.
-    c.feature_edge[e] = face_normals[fs[0]].dot(face_normals[fs[1]]) < sharp_cosine;
-    sharp_edge[e] = c.feature_edge[e] && ridge_candidate[ends[0]] && ridge_candidate[ends[1]];
-  }
-  // Candidates that had a sharp edge the crease contrast dropped (curvature, not a crease).
-  std::vector<unsigned char> curved;
-  if (!opt.constrained_edges && opt.crease_contrast > 0) {
-    curved.assign(nv, 0);
-    keep_contrasted_creases(m, incidences, face_normals, opt.crease_contrast, sharp_edge, curved);
-  }
-  for (std::size_t e = 0; e < ne; ++e) c.feature_edge[e] = c.feature_edge[e] || sharp_edge[e];
-
-  // Attached-sharp nodes decide between ridge and corner (paper §3), user edges overriding.
-  for (std::size_t v = 0; v < nv; ++v) {
+  for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
     if (c.type[v] != ILSA_vertex_type::Smooth) continue;
     std::size_t count = 0;
+    std::array<Index, 2> attached_sharp{npos, npos}; // the first two attached-sharp nodes
     const Index* nb = m.vertex_neighbors.first(v);
     for (const Index* e = m.vertex_edges.first(v); e != m.vertex_edges.last(v); ++e, ++nb) {
-      if (!sharp_edge[*e]) continue;
+      if (!w.sharp_edge[*e]) continue;
       if (count < 2) {
-        attached_sharp[v][count] = *nb;
+        attached_sharp[count] = *nb;
         c.attached_edges[v][count] = *e;
       }
       ++count;
     }
-    const bool candidate = opt.constrained_edges ? count > 0 : bool(ridge_candidate[v]);
+    const bool candidate = opt.constrained_edges ? count > 0 : bool(w.ridge_candidate[v]);
     if (!candidate) continue;
     // Where the crease contrast dropped sharp edges, fewer than two left: a
     // vertex of a curved surface (or the end of a crease fading into it).
-    if (!curved.empty() && curved[v] && count < 2) continue;
-    if (count == 2 && is_kink(m.points[v], m.points[attached_sharp[v][0]], m.points[attached_sharp[v][1]])) {
+    if (!w.curved.empty() && w.curved[v] && count < 2) continue;
+    if (count == 2 && is_kink(m.points[v], m.points[attached_sharp[0]], m.points[attached_sharp[1]])) {
       c.type[v] = ILSA_vertex_type::Corner;
       ++c.number_of_kinks;
     } else if (count == 2)
@@ -217,26 +222,48 @@ inline Vertex_classification classify(const Flat_mesh& m, const Set_up_incidence
     else if (count != 0 || opt.fix_unattached_candidates)
       c.type[v] = ILSA_vertex_type::Corner;
   }
+}
 
-  if (opt.constrained_vertices)
-    for (std::size_t v = 0; v < nv; ++v)
-      if ((*opt.constrained_vertices)[v] && c.type[v] != ILSA_vertex_type::Boundary)
-        c.type[v] = ILSA_vertex_type::Corner;
-
-  for (std::size_t v = 0; v < nv; ++v)
-    if (c.type[v] != ILSA_vertex_type::Ridge) c.attached_edges[v] = {npos, npos};
-
-  // Crease polylines: sharp edges chained through ridge vertices (union-find).
+/// Crease polylines: sharp edges chained through ridge vertices (union-find).
+inline void chain_creases(const Flat_mesh& m, const Classification_work& w, Vertex_classification& c) {
+  const std::size_t ne = m.edges.size();
   std::vector<std::size_t> parent(ne);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   auto find = [&parent](std::size_t e) {
     while (parent[e] != e) e = parent[e] = parent[parent[e]];
     return e;
   };
-  for (std::size_t v = 0; v < nv; ++v)
+  for (std::size_t v = 0; v < m.number_of_vertices(); ++v)
     if (c.type[v] == ILSA_vertex_type::Ridge) parent[find(c.attached_edges[v][0])] = find(c.attached_edges[v][1]);
   for (std::size_t e = 0; e < ne; ++e)
-    if (sharp_edge[e]) c.crease_of_edge[e] = find(e);
+    if (w.sharp_edge[e]) c.crease_of_edge[e] = find(e);
+}
+
+/// Classifies the vertices of `m` (paper §3), user constraints overriding.
+/// `incidences`: those of `m` (read here only).
+inline Vertex_classification classify(const Flat_mesh& m, const Set_up_incidences& incidences,
+                                      const Classification_options& opt) {
+  const std::size_t nv = m.number_of_vertices(), ne = m.edges.size();
+  Vertex_classification c;
+  c.type.assign(nv, ILSA_vertex_type::Smooth);
+  c.crease_of_edge.assign(ne, npos);
+  c.feature_edge.assign(ne, 0);
+  c.attached_edges.assign(nv, {npos, npos});
+  Classification_work w;
+  w.ridge_candidate.assign(nv, 0);
+  w.sharp_edge.assign(ne, 0);
+  compute_face_normals(m, m.points, w.face_normals);
+
+  mark_fixed_and_candidates(m, incidences, opt, c, w);
+  mark_feature_and_sharp_edges(m, incidences, opt, c, w);
+  type_candidates(m, opt, w, c);
+  if (opt.constrained_vertices)
+    for (std::size_t v = 0; v < nv; ++v)
+      if ((*opt.constrained_vertices)[v] && c.type[v] != ILSA_vertex_type::Boundary)
+        c.type[v] = ILSA_vertex_type::Corner;
+  for (std::size_t v = 0; v < nv; ++v)
+    if (c.type[v] != ILSA_vertex_type::Ridge) c.attached_edges[v] = {npos, npos};
+  chain_creases(m, w, c);
   return c;
 }
 
