@@ -4,6 +4,7 @@
 //   ilsa_benchmark [--runs N] [--peer-iterations N] [MESH ...]
 //   ilsa_benchmark --scaling N
 //   ilsa_benchmark --pareto [--peer-iterations N] [MESH ...]
+//   ilsa_benchmark --phases [--runs N] [--peer-iterations N] [MESH ...]
 //
 // Without meshes: every bundled mesh, plus ../shared/data when it exists.
 // Prints one Markdown table row per (mesh, method): quality (aspect ratio q
@@ -24,6 +25,12 @@
 // contrast of 5; mean q, Hausdorff distance and its ratio to H, flipped faces.
 // Also ILSA with every default: its Hausdorff distance over the default
 // fidelity tolerance. One run each (no time measured).
+// --phases prints instead where ILSA's time goes, one thread, median of N
+// runs: the time to the end of the first iteration (the callback's first
+// call), the median time between two later calls (one iteration with its
+// convergence test), the set-up as the first less one iteration, and the
+// iterations run; beside it tangential relaxation's total and time per
+// iteration (it has no set-up of its own to separate).
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -269,12 +276,57 @@ void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations)
   }
 }
 
+// The --phases table (see the top of the file).
+void run_phases(const std::vector<std::string>& files, int runs, unsigned peer_iterations) {
+  std::cout << "| mesh | ILSA total s | to the end of iteration 1 s | per iteration s | set-up s (estimate) | "
+               "set-up / total | iterations | tangential relaxation total s | per iteration s | ILSA set-up / peer "
+               "total |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  using Clock = std::chrono::steady_clock;
+  for (const std::string& file : files) {
+    Mesh input;
+    if (!CGAL::IO::read_polygon_mesh(file, input) || is_empty(input) || !CGAL::is_triangle_mesh(input)) {
+      std::cerr << "skipping " << file << ": not a readable triangle mesh\n";
+      continue;
+    }
+    std::vector<double> totals, firsts, steps, peers;
+    std::size_t iterations = 0;
+    for (int r = 0; r < runs; ++r) {
+      Mesh m = input;
+      std::vector<Clock::time_point> calls;
+      const std::function<bool(double)> stamp = [&calls](double) {
+        calls.push_back(Clock::now());
+        return true;
+      };
+      const auto start = Clock::now();
+      iterations = PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::callback(stamp)).number_of_iterations;
+      totals.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+      if (calls.empty()) continue;
+      firsts.push_back(std::chrono::duration<double>(calls.front() - start).count());
+      std::vector<double> between;
+      for (std::size_t k = 1; k < calls.size(); ++k)
+        between.push_back(std::chrono::duration<double>(calls[k] - calls[k - 1]).count());
+      if (!between.empty()) steps.push_back(median(between));
+      Mesh p = input;
+      const auto peer_start = Clock::now();
+      PMP::tangential_relaxation(p, CGAL::parameters::number_of_iterations(peer_iterations));
+      peers.push_back(std::chrono::duration<double>(Clock::now() - peer_start).count());
+    }
+    if (firsts.empty() || steps.empty() || peers.empty()) continue;
+    const double total = median(totals), first = median(firsts), step = median(steps), peer = median(peers);
+    const double setup = first - step;
+    std::printf("| %s | %.3f | %.3f | %.4f | %.3f | %.2f | %zu | %.3f | %.4f | %.2f |\n",
+                std::filesystem::path(file).filename().string().c_str(), total, first, step, setup, setup / total,
+                iterations, peer, peer / double(peer_iterations), setup / peer);
+    std::fflush(stdout);
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--child") return run_child(argv[2], argv[3]);
   int runs = 5;
   unsigned peer_iterations = 10;
   int scaling = -1; // --scaling N: the scaling table up to N subdivisions, and nothing else
-  bool pareto = false;
+  bool pareto = false, phases = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -284,6 +336,8 @@ int main(int argc, char** argv) {
       scaling = std::max(0, std::atoi(argv[++i]));
     else if (a == "--pareto")
       pareto = true;
+    else if (a == "--phases")
+      phases = true;
     else if (a == "--peer-iterations" && i + 1 < argc)
       peer_iterations = unsigned(std::max(1, std::atoi(argv[++i])));
     else
@@ -296,6 +350,10 @@ int main(int argc, char** argv) {
   if (files.empty()) files = default_meshes();
   if (pareto) {
     run_pareto(files, peer_iterations);
+    return 0;
+  }
+  if (phases) {
+    run_phases(files, runs, peer_iterations);
     return 0;
   }
 
