@@ -235,6 +235,13 @@ void run_scaling(const std::string& self, unsigned max_level) {
 
 } // namespace
 
+// Reads the triangle mesh `file` into `input`; says so and returns false if it cannot.
+bool read_input(const std::string& file, Mesh& input) {
+  if (CGAL::IO::read_polygon_mesh(file, input) && !is_empty(input) && CGAL::is_triangle_mesh(input)) return true;
+  std::cerr << "skipping " << file << ": not a readable triangle mesh\n";
+  return false;
+}
+
 // The --pareto table (see the top of the file).
 void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations) {
   const double default_tolerance = PMP::internal::ILSA::defaults::fidelity_tolerance;
@@ -243,10 +250,7 @@ void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations)
                "ILSA defaults: H / tolerance |\n|---|---|---|---|---|---|\n";
   for (const std::string& file : files) {
     Mesh input;
-    if (!CGAL::IO::read_polygon_mesh(file, input) || is_empty(input) || !CGAL::is_triangle_mesh(input)) {
-      std::cerr << "skipping " << file << ": not a readable triangle mesh\n";
-      continue;
-    }
+    if (!read_input(file, input)) continue;
     struct Result {
       double q, h;
       std::size_t flipped;
@@ -284,10 +288,7 @@ void run_phases(const std::vector<std::string>& files, int runs, unsigned peer_i
   using Clock = std::chrono::steady_clock;
   for (const std::string& file : files) {
     Mesh input;
-    if (!CGAL::IO::read_polygon_mesh(file, input) || is_empty(input) || !CGAL::is_triangle_mesh(input)) {
-      std::cerr << "skipping " << file << ": not a readable triangle mesh\n";
-      continue;
-    }
+    if (!read_input(file, input)) continue;
     std::vector<double> totals, firsts, steps, peers;
     std::size_t iterations = 0;
     for (int r = 0; r < runs; ++r) {
@@ -372,10 +373,7 @@ int main(int argc, char** argv) {
 
   for (const std::string& file : files) {
     Mesh input;
-    if (!CGAL::IO::read_polygon_mesh(file, input) || is_empty(input) || !CGAL::is_triangle_mesh(input)) {
-      std::cerr << "skipping " << file << ": not a readable triangle mesh\n";
-      continue;
-    }
+    if (!read_input(file, input)) continue;
     const std::string name = std::filesystem::path(file).filename().string();
 
     // Sharp edges for the peers, computed once on the input (same edge indices in every copy).

@@ -69,6 +69,15 @@ struct ILSA_move_limits {
   std::size_t crease = 0;           ///< a feature line would move farther than the fidelity tolerance from the input's
 
   std::size_t total() const { return flip_or_collapse + quality_floor + worsening + fidelity + crease; }
+  ILSA_move_limits& operator+=(const ILSA_move_limits& x) {
+    flip_or_collapse += x.flip_or_collapse, quality_floor += x.quality_floor, worsening += x.worsening;
+    fidelity += x.fidelity, crease += x.crease;
+    return *this;
+  }
+  friend bool operator==(const ILSA_move_limits& a, const ILSA_move_limits& b) {
+    return a.flip_or_collapse == b.flip_or_collapse && a.quality_floor == b.quality_floor &&
+           a.worsening == b.worsening && a.fidelity == b.fidelity && a.crease == b.crease;
+  }
 };
 
 /// \ingroup PkgPMPILSARef

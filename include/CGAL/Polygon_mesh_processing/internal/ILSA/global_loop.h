@@ -92,13 +92,16 @@ public:
   const std::vector<Vec3>& positions() const { return pos_; }
 
 private:
+  // The floor the safety check applies: 1 in the quality-monotone mode;
+  // without an explicit floor, the default raised to the input's minimum
+  // aspect ratio, so that the output's is never below it.
   static double floor_of_check(const Flat_mesh& m, const Smoothing_parameters& p) {
-    if (!p.raise_floor_to_input_minimum) return p.floor_of_check();
-    // The minimum aspect ratio of the output is then never below the input's.
+    if (p.quality_monotone) return 1.;
+    if (!p.raise_floor_to_input_minimum) return p.quality_floor;
     double input_minimum = 1.;
     for (const auto& t : m.faces)
       input_minimum = (std::min)(input_minimum, triangle_aspect_ratio(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
-    return p.quality_monotone ? 1. : (std::max)(p.quality_floor, input_minimum);
+    return (std::max)(p.quality_floor, input_minimum);
   }
 
   // One global iteration: the displacements, the projected moves, the safety
@@ -118,7 +121,7 @@ private:
   // paper §3 where the penalty plane needs it). `next_` serves as the
   // sweeps' second buffer before the projection fills it.
   void compute_displacements() {
-    compute_ilsa_displacement<ConcurrencyTag>(pos_, nb_, p_.relax1, p_.sweeps, tolerance_, d_, workspace_, next_);
+    compute_ilsa_displacement<ConcurrencyTag>(pos_, nb_, p_.relax1, penalty_.sweeps, tolerance_, d_, workspace_, next_);
     adjust_displacement_by_penalty<ConcurrencyTag>(m_, pos_, nb_, penalty_, d_, face_values_, next_,
                                                    workspace_.weights);
   }
@@ -168,12 +171,8 @@ private:
     stats.number_of_rejected_moves += counts.rejected + skipped_moves;
     stats.number_of_moves_dropped_before_projection += skipped_moves;
     stats.number_of_moves += moved_.size() - counts.rejected;
-    add(stats.moves_dropped_by, counts.rejected_by);
-    add(stats.moves_shortened_by, counts.shortened_by);
-  }
-  static void add(ILSA_move_limits& sum, const ILSA_move_limits& x) {
-    sum.flip_or_collapse += x.flip_or_collapse, sum.quality_floor += x.quality_floor, sum.worsening += x.worsening;
-    sum.fidelity += x.fidelity, sum.crease += x.crease;
+    stats.moves_dropped_by += counts.rejected_by;
+    stats.moves_shortened_by += counts.shortened_by;
   }
 
   Projector::Result project(std::size_t v, const Vec3& q, const Vec3& current, std::size_t home, bool guard) const {

@@ -27,9 +27,8 @@ namespace ILSA {
 
 struct Smoothing_parameters {
   std::size_t iterations = defaults::number_of_iterations; // the paper's max_global_iter_num
-  std::size_t sweeps = defaults::number_of_relaxation_steps;
   double relax1 = defaults::relaxation;
-  Penalty_parameters penalty; // relax2, μ, wl, wa, and the sweeps
+  Penalty_parameters penalty; // relax2, μ, wl, wa, and the sweeps of both the ILSA and the penalty step
   bool do_project = defaults::do_project;
   bool use_safety = defaults::use_safety_constraints;
   // The quality floor; without an explicit one, raised to the input's
@@ -45,8 +44,6 @@ struct Smoothing_parameters {
   bool verbose = false;
   std::function<bool(double)> callback;
 
-  /// The floor the safety check applies (1 in the quality-monotone mode).
-  double floor_of_check() const { return quality_monotone ? 1. : quality_floor; }
   /// Whether the run may stop before `iterations` (user manual, "Stopping early").
   bool may_stop() const { return minimum_gain > 0 || minimum_remaining_gain > 0; }
 };
@@ -108,8 +105,7 @@ template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(
   require(penalty.area_weight >= 0 && std::isfinite(penalty.area_weight),
           "ilsa_area_weight must be non-negative and finite");
   p.iterations = std::size_t(iterations);
-  p.sweeps = std::size_t(sweeps);
-  penalty.sweeps = p.sweeps;
+  penalty.sweeps = std::size_t(sweeps);
   return p;
 }
 
