@@ -132,7 +132,7 @@ const char* usage =
     "                          on large meshes); auto: full up to 200000 faces (default auto)\n"
     "  --progress, --no-progress\n"
     "                          a progress line per iteration on stderr (default: on a terminal)\n"
-    "  --verbose               print what each iteration does\n"
+    "  --verbose               print the set-up's time and what each iteration does (and its time)\n"
     "  --worst N               list the N worst faces after smoothing: aspect ratio before and after,\n"
     "                          type of each vertex and whether it moved, smallest dihedral angle of\n"
     "                          the face's edges in the input\n";

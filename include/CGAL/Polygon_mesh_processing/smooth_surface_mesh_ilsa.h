@@ -17,6 +17,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/set_up.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/smoothing_parameters.h>
 
+#include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/unordered_map.hpp>
@@ -252,7 +253,8 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *     \cgalParamDefault{no callback}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{verbose}
- *     \cgalParamDescription{whether to print the vertex types and what each iteration did to `std::cerr`}
+ *     \cgalParamDescription{whether to print the vertex types, the time of the set-up and what each iteration did
+ * (and its time) to `std::cerr`}
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`false`}
  *   \cgalParamNEnd
@@ -283,12 +285,15 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
 
   // 2. Set up: the frozen flat copy of the input (T_ori) and its vertex
   // classification (paper §3), checked before anything is written.
+  CGAL::Real_timer timer; // for `verbose` (user manual, "Performance")
+  timer.start();
   ilsa::Set_up_incidences incidences; // read by the set-up only, freed before the iterations
   const ilsa::Flat_input<TriangleMesh> input = ilsa::classified_flat_copy(tm, vpm, np, incidences);
   const ilsa::Ilsa_neighborhoods neighborhoods = ilsa::make_ilsa_neighborhoods(
       input.mesh, input.classification, ilsa::vertices_in_range(vertices, input.vertices));
   ILSA_statistics stats;
   ilsa::count_types(input.classification, stats);
+  const double copy_seconds = timer.time();
   if (smoothing.verbose)
     std::cerr << "ILSA: " << stats.number_of_smooth_vertices << " smooth, " << stats.number_of_ridge_vertices
               << " ridge, " << stats.number_of_corner_vertices << " corner, " << stats.number_of_boundary_vertices
@@ -298,6 +303,9 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   // 3. Iterate (the paper's Algo. 1).
   ilsa::Global_loop<ConcurrencyTag> loop(input.mesh, input.classification, neighborhoods, smoothing, incidences);
   incidences = ilsa::Set_up_incidences();
+  if (smoothing.verbose)
+    std::cerr << "ILSA set-up: " << copy_seconds << " s flat copy and classification, " << timer.time() - copy_seconds
+              << " s projection trees, clearances and safety check\n";
   loop.run(stats);
 
   // 4. Write T_new back.

@@ -20,6 +20,8 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/smoothing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
+#include <CGAL/Real_timer.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <iostream>
@@ -69,12 +71,16 @@ public:
   /// Runs the iterations until `parameters.iterations`, a stop or the callback ends them.
   void run(ILSA_statistics& stats) {
     double mean_q = p_.may_stop() ? mean_quality() : 0.;
+    CGAL::Real_timer timer;
     for (std::size_t step = 0; step < p_.iterations; ++step) {
+      timer.reset();
+      timer.start();
       iterate(stats);
+      timer.stop();
       if (p_.verbose)
         std::cerr << "ILSA iteration " << step + 1 << ": " << moved_.size() << " moves, "
                   << stats.number_of_shortened_moves << " shortened and " << stats.number_of_rejected_moves
-                  << " rejected so far\n";
+                  << " rejected so far (" << timer.time() << " s)\n";
       if (p_.callback && !p_.callback(double(step + 1) / double(p_.iterations))) break;
       if (p_.may_stop()) {
         // Stop on a small gain of this iteration, or when this gain times the
