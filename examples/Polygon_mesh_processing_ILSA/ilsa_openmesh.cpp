@@ -8,7 +8,7 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/mesh_quality_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
 #include <CGAL/boost/graph/graph_traits_TriMesh_ArrayKernelT.h>
 #include <CGAL/boost/graph/properties_TriMesh_ArrayKernelT.h>

@@ -3,7 +3,7 @@
 //   ilsa_polyhedron [INPUT [OUTPUT]]     (default: the bundled fandisk)
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/mesh_quality_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
 #include <CGAL/Polyhedron_3.h>
 

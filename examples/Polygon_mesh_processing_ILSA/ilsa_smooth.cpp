@@ -12,7 +12,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/Color.h>
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
-#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/mesh_quality_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_version.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -294,7 +294,7 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
                                   .ilsa_crease_contrast(o.crease_contrast));
   auto aspect_ratio = [](const Mesh& m, Mesh::Face_index f) {
     const auto h = halfedge(f, m);
-    return PMP::triangle_aspect_ratio(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
+    return PMP::triangle_quality_ilsa(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
   };
   std::vector<std::pair<double, Mesh::Face_index>> ranked;
   for (auto f : faces(smoothed)) ranked.emplace_back(aspect_ratio(smoothed, f), f);
@@ -452,7 +452,7 @@ int run(const Options& o) {
     auto colors = mesh.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first;
     for (auto face : faces(mesh)) {
       const auto h = halfedge(face, mesh);
-      colors[face] = quality_color(PMP::triangle_aspect_ratio(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)),
+      colors[face] = quality_color(PMP::triangle_quality_ilsa(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)),
                                                               mesh.point(target(next(h, mesh), mesh))));
     }
   }

@@ -5,7 +5,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
-#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/mesh_quality_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -174,7 +174,7 @@ template <class Mesh> void perturb_on_surface(Mesh& m, double amount, unsigned s
     for (auto f : faces_around_target(halfedge(mv.first, m), m))
       if (f != boost::graph_traits<Mesh>::null_face()) {
         const auto h = halfedge(f, m);
-        const double q = PMP::triangle_aspect_ratio(get(CGAL::vertex_point, m, source(h, m)),
+        const double q = PMP::triangle_quality_ilsa(get(CGAL::vertex_point, m, source(h, m)),
                                                     get(CGAL::vertex_point, m, target(h, m)),
                                                     get(CGAL::vertex_point, m, target(next(h, m), m)));
         ok = ok && q > 0.01 && PMP::compute_face_normal(f, m) * before[k++] > 0;

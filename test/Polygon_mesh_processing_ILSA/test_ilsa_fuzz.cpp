@@ -91,7 +91,7 @@ double star_mean(const Surface_mesh& m, vd v, const Point& at, double& shortest)
     std::array<Point, 3> p;
     std::size_t k = 0;
     for (auto u : CGAL::vertices_around_face(m.halfedge(f), m)) p[k++] = u == v ? at : m.point(u);
-    sum += PMP::triangle_aspect_ratio(p[0], p[1], p[2]);
+    sum += PMP::triangle_quality_ilsa(p[0], p[1], p[2]);
     for (std::size_t i = 0; i < 3; ++i)
       shortest = (std::min)(shortest, std::sqrt(CGAL::squared_distance(p[i], p[(i + 1) % 3])));
     ++n;

@@ -20,6 +20,14 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 
+// The names of version 1.0.0 (deprecated headers and functions) still work,
+// without their warnings here; under CGAL_NO_DEPRECATED_CODE they are gone.
+#ifndef CGAL_NO_DEPRECATED_CODE
+#define CGAL_NO_DEPRECATION_WARNINGS
+#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
+#endif
+
 #include <cctype>
 #include <limits>
 #include <sstream>
@@ -593,7 +601,7 @@ template <class Mesh> void test_degenerate_reference() {
 }
 
 // The safety check's and the convergence stop's aspect ratio (inlined, on the
-// package's vectors) is triangle_aspect_ratio(), bit for bit: on random
+// package's vectors) is triangle_quality_ilsa(), bit for bit: on random
 // triangles of sizes 1e-150 to 1e150, and on degenerate ones (a vertex
 // repeated, three collinear points, a point triangle).
 void test_inlined_aspect_ratio() {
@@ -620,7 +628,7 @@ void test_inlined_aspect_ratio() {
       break;
     }
     const double inlined = ilsa::aspect_ratio(p[0], p[1], p[2]),
-                 reference = PMP::triangle_aspect_ratio(p[0], p[1], p[2]);
+                 reference = PMP::triangle_quality_ilsa(p[0], p[1], p[2]);
     assert(inlined == reference);
     degenerate += inlined == 0;
     ++compared;
@@ -628,6 +636,28 @@ void test_inlined_aspect_ratio() {
   std::cout << "inlined aspect ratio: " << compared << " triangles, equal bit for bit (" << degenerate
             << " of aspect ratio 0)" << std::endl;
   assert(degenerate >= 100000 / 8);
+}
+
+// The deprecated names of version 1.0.0 give the new functions' values.
+void test_deprecated_names() {
+#ifndef CGAL_NO_DEPRECATED_CODE
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+  std::mt19937 rng(12);
+  std::normal_distribution<double> normal;
+  std::size_t compared = 0;
+  for (int i = 0; i < 1000; ++i) {
+    std::array<Point, 3> p;
+    for (auto& x : p) x = Point(normal(rng), normal(rng), normal(rng));
+    assert(PMP::triangle_aspect_ratio(p[0], p[1], p[2]) == PMP::triangle_quality_ilsa(p[0], p[1], p[2]));
+    assert(PMP::triangle_radius_ratio(p[0], p[1], p[2]) == PMP::triangle_radius_ratio_ilsa(p[0], p[1], p[2]));
+    assert(PMP::triangle_mean_ratio(p[0], p[1], p[2]) == PMP::triangle_mean_ratio_ilsa(p[0], p[1], p[2]));
+    assert(PMP::triangle_minimum_angle(p[0], p[1], p[2]) == PMP::triangle_minimum_angle_ilsa(p[0], p[1], p[2]));
+    ++compared;
+  }
+#pragma GCC diagnostic pop
+  std::cout << "deprecated names: " << compared << " triangles, same values as the new names" << std::endl;
+#endif
 }
 
 // A face collapsed in the input may open again only the right way round: the
@@ -771,7 +801,7 @@ template <class Mesh> void test_worsening_moves_rejected() {
         if (f == boost::graph_traits<Mesh>::null_face()) continue;
         std::vector<Point> p;
         for (auto w : vertices_around_face(halfedge(f, smoothed), smoothed)) p.push_back(w == v ? at : get(vpm, w));
-        sum += PMP::triangle_aspect_ratio(p[0], p[1], p[2]);
+        sum += PMP::triangle_quality_ilsa(p[0], p[1], p[2]);
         ++n;
       }
       return sum / n;
@@ -1069,12 +1099,12 @@ void test_documented_defaults() {
   reference("classify_vertices_ilsa.h", classification);
   // The quality summaries list their parameters as "- `name` (default `value`)".
   {
-    const std::string text = read("include/CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h");
+    const std::string text = read("include/CGAL/Polygon_mesh_processing/mesh_quality_ilsa.h");
     for (const std::string name : {"ilsa_quality_threshold", "ilsa_feature_angle"}) {
       const std::string key = "`" + name + "` (default `";
       for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
         const std::size_t open = at + key.size();
-        expect("ilsa_mesh_quality.h", name, text.substr(open, text.find('`', open) - open));
+        expect("mesh_quality_ilsa.h", name, text.substr(open, text.find('`', open) - open));
         ++quality;
       }
     }
@@ -1171,6 +1201,7 @@ int main() {
   test_degenerate_reference<Surface_mesh>();
   test_degenerate_reference<Polyhedron>();
   test_inlined_aspect_ratio();
+  test_deprecated_names();
   test_move_limits<Surface_mesh>();
   test_move_limits<Polyhedron>();
   test_collapsed_faces_open_right_way<Surface_mesh>();

@@ -289,8 +289,8 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   timer.start();
   ilsa::Set_up_incidences incidences; // read by the set-up only, freed before the iterations
   const ilsa::Flat_input<TriangleMesh> input = ilsa::classified_flat_copy(tm, vpm, np, incidences);
-  const ilsa::Ilsa_neighborhoods neighborhoods = ilsa::make_ilsa_neighborhoods(
-      input.mesh, input.classification, ilsa::vertices_in_range(vertices, input.vertices));
+  const ilsa::ILSA_neighborhoods neighborhoods =
+      ilsa::make_neighborhoods(input.mesh, input.classification, ilsa::vertices_in_range(vertices, input.vertices));
   ILSA_statistics stats;
   ilsa::count_types(input.classification, stats);
   const double copy_seconds = timer.time();

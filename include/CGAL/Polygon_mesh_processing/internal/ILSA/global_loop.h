@@ -9,7 +9,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_GLOBAL_LOOP_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_GLOBAL_LOOP_H
 
-#include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
+#include <CGAL/Polygon_mesh_processing/triangle_quality_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
@@ -40,7 +40,7 @@ namespace ILSA {
 template <class ConcurrencyTag> class Global_loop {
 public:
   Global_loop(const Flat_mesh& original, const Vertex_classification& classification,
-              const Ilsa_neighborhoods& neighborhoods, const Smoothing_parameters& parameters,
+              const ILSA_neighborhoods& neighborhoods, const Smoothing_parameters& parameters,
               const Set_up_incidences& incidences)
       : m_(original), nb_(neighborhoods), p_(parameters), penalty_(parameters.penalty),
         projector_(original, classification, incidences, ConcurrencyTag()),
@@ -106,7 +106,7 @@ private:
     if (!p.raise_floor_to_input_minimum) return p.quality_floor;
     double input_minimum = 1.;
     for (const auto& t : m.faces)
-      input_minimum = (std::min)(input_minimum, triangle_aspect_ratio(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
+      input_minimum = (std::min)(input_minimum, triangle_quality_ilsa(m.points[t[0]], m.points[t[1]], m.points[t[2]]));
     return (std::max)(p.quality_floor, input_minimum);
   }
 
@@ -218,7 +218,7 @@ private:
   }
 
   const Flat_mesh& m_;
-  const Ilsa_neighborhoods& nb_;
+  const ILSA_neighborhoods& nb_;
   const Smoothing_parameters& p_;
   Penalty_parameters penalty_; // the parameters' with the sweeps' tolerance
   const Projector projector_;

@@ -23,7 +23,7 @@ namespace ILSA {
 
 /// Which vertices move and which neighbours drive them (paper's Algo. 2): all one-ring
 /// vertices for a smooth node, only its two attached-sharp nodes for a ridge node.
-struct Ilsa_neighborhoods {
+struct ILSA_neighborhoods {
   const Flat_mesh* mesh = nullptr;
   const Vertex_classification* classification = nullptr;
   std::vector<Index> adjustable; // smooth and ridge vertices allowed to move
@@ -48,9 +48,9 @@ struct Ilsa_neighborhoods {
 
 /// `movable[v]` is false for the vertices outside the user's range. `m` and
 /// `c` must outlive the result: it keeps pointers.
-inline Ilsa_neighborhoods make_ilsa_neighborhoods(const Flat_mesh& m, const Vertex_classification& c,
-                                                  const std::vector<unsigned char>& movable) {
-  Ilsa_neighborhoods nb;
+inline ILSA_neighborhoods make_neighborhoods(const Flat_mesh& m, const Vertex_classification& c,
+                                             const std::vector<unsigned char>& movable) {
+  ILSA_neighborhoods nb;
   nb.mesh = &m;
   nb.classification = &c;
   for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
@@ -73,7 +73,7 @@ struct Ilsa_workspace {
 /// changes by more than it. `buffer`: the sweeps' second buffer, overwritten
 /// (the caller lends any per-vertex array it does not need meanwhile).
 template <class ConcurrencyTag>
-std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const Ilsa_neighborhoods& nb, double relax1,
+std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const ILSA_neighborhoods& nb, double relax1,
                                       std::size_t sweeps, double tolerance, std::vector<Vec3>& d, Ilsa_workspace& ws,
                                       std::vector<Vec3>& buffer) {
   const Flat_mesh& m = *nb.mesh;

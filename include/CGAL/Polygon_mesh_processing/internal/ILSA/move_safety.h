@@ -16,7 +16,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_MOVE_SAFETY_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_MOVE_SAFETY_H
 
-#include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
+#include <CGAL/Polygon_mesh_processing/triangle_quality_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/feature_lines.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
@@ -38,14 +38,14 @@ namespace ILSA {
 
 /// Aspect ratio of a triangle from twice its area and its squared edge
 /// lengths (opposite to its vertices 0, 1, 2): the edge vectors and lengths of
-/// triangle_aspect_ratio() in the same order, hence the same value, bit for
+/// triangle_quality_ilsa() in the same order, hence the same value, bit for
 /// bit (test_ilsa_smoothing checks it).
 inline double aspect_ratio_from(double double_area, const std::array<double, 3>& squared_length) {
   return aspect_ratio_of_shape(
       double_area, {std::sqrt(squared_length[0]), std::sqrt(squared_length[1]), std::sqrt(squared_length[2])});
 }
 
-/// triangle_aspect_ratio(a, b, c), small enough to be inlined where the
+/// triangle_quality_ilsa(a, b, c), small enough to be inlined where the
 /// safety check and the convergence stop compute many.
 inline double aspect_ratio(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a;

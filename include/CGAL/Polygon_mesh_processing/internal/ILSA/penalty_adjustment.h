@@ -136,7 +136,7 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 /// Returns the number of sweeps run.
 template <class ConcurrencyTag>
 std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
-                                           const Ilsa_neighborhoods& nb, const Penalty_parameters& p,
+                                           const ILSA_neighborhoods& nb, const Penalty_parameters& p,
                                            std::vector<Vec3>& d, std::vector<double>& beta, std::vector<Vec3>& buffer,
                                            std::vector<double>& target) {
   // β_j from the current faces; a floor at 1e-3 of the mean area keeps a

@@ -1,0 +1,300 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Mesh quality and fidelity summaries, for the tool, the examples, the
+// benchmark, the tests and users who evaluate a result. The triangle shape
+// measures they rest on (and the smoother uses) are in triangle_quality_ilsa.h.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_MESH_QUALITY_ILSA_H
+#define CGAL_POLYGON_MESH_PROCESSING_MESH_QUALITY_ILSA_H
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/triangle_quality_ilsa.h>
+#include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/feature_lines.h>
+#include <CGAL/Random.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/property_map.h>
+
+#include <boost/unordered_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+
+/// \ingroup PkgPMPILSARef
+/// Summary of the shape quality of a set of triangles.
+struct ILSA_quality_summary {
+  std::size_t number_of_faces = 0;
+  std::size_t number_of_degenerate_faces = 0; ///< aspect ratio below 1e-6 (zero area, in practice)
+  double min_aspect_ratio = 0, mean_aspect_ratio = 0;
+  double min_radius_ratio = 0, mean_radius_ratio = 0;
+  double min_mean_ratio = 0, mean_mean_ratio = 0;
+  double min_angle = 0;                    ///< degrees
+  double threshold = 0.3;                  ///< the threshold `share_below_threshold` refers to
+  double share_below_threshold = 0;        ///< share of faces with aspect ratio below `threshold`
+  std::array<std::size_t, 10> histogram{}; ///< aspect ratio counts in [0,0.1), [0.1,0.2), ..., [0.9,1]
+};
+
+/// \ingroup PkgPMPILSARef
+/// Quality summary over the faces `face_range` of the triangle mesh `tm`.
+/// Named parameters, in any order:
+/// - `vertex_point_map` (default `get_const_property_map(CGAL::vertex_point, tm)`);
+/// - `ilsa_quality_threshold` (default `0.3`): the aspect ratio under which a
+///   face counts as poor in `share_below_threshold`.
+template <class FaceRange, class TriangleMesh, class NamedParameters = parameters::Default_named_parameters,
+          typename = std::enable_if_t<!internal::ILSA::is_named_parameters<TriangleMesh>::value>>
+ILSA_quality_summary mesh_quality_ilsa(const FaceRange& face_range, const TriangleMesh& tm,
+                                       const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto vpm =
+      choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const double threshold = choose_parameter(get_parameter(np, internal_np::ilsa_quality_threshold),
+                                            internal::ILSA::defaults::quality_threshold);
+
+  ILSA_quality_summary s;
+  s.threshold = threshold;
+  s.min_aspect_ratio = s.min_radius_ratio = s.min_mean_ratio = 1.;
+  s.min_angle = 180.;
+  std::size_t below = 0;
+  for (auto f : face_range) {
+    const auto h = halfedge(f, tm);
+    const auto& p0 = get(vpm, source(h, tm));
+    const auto& p1 = get(vpm, target(h, tm));
+    const auto& p2 = get(vpm, target(next(h, tm), tm));
+    const double q = triangle_quality_ilsa(p0, p1, p2);
+    const double rr = triangle_radius_ratio_ilsa(p0, p1, p2);
+    const double mr = triangle_mean_ratio_ilsa(p0, p1, p2);
+    ++s.number_of_faces;
+    s.mean_aspect_ratio += q;
+    s.mean_radius_ratio += rr;
+    s.mean_mean_ratio += mr;
+    s.min_aspect_ratio = (std::min)(s.min_aspect_ratio, q);
+    s.min_radius_ratio = (std::min)(s.min_radius_ratio, rr);
+    s.min_mean_ratio = (std::min)(s.min_mean_ratio, mr);
+    s.min_angle = (std::min)(s.min_angle, triangle_minimum_angle_ilsa(p0, p1, p2));
+    if (q < 1e-6) ++s.number_of_degenerate_faces;
+    if (q < threshold) ++below;
+    ++s.histogram[(std::min)(std::size_t(9), std::size_t((std::max)(q, 0.) * 10.))];
+  }
+  if (s.number_of_faces == 0) {
+    s.min_aspect_ratio = s.min_radius_ratio = s.min_mean_ratio = s.min_angle = 0;
+    return s;
+  }
+  const double n = double(s.number_of_faces);
+  s.mean_aspect_ratio /= n;
+  s.mean_radius_ratio /= n;
+  s.mean_mean_ratio /= n;
+  s.share_below_threshold = double(below) / n;
+  return s;
+}
+
+/// \ingroup PkgPMPILSARef
+/// Quality summary over all faces of `tm`; named parameters as in the range overload.
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters,
+          typename = std::enable_if_t<!internal::ILSA::is_named_parameters<TriangleMesh>::value &&
+                                      internal::ILSA::is_named_parameters<NamedParameters>::value>>
+ILSA_quality_summary mesh_quality_ilsa(const TriangleMesh& tm,
+                                       const NamedParameters& np = parameters::default_values()) {
+  return mesh_quality_ilsa(faces(tm), tm, np);
+}
+
+/// \ingroup PkgPMPILSARef
+/// How faithful a smoothed mesh is to its original (same connectivity).
+/// Distances are relative to the bounding-box diagonal of the original.
+struct ILSA_fidelity_summary {
+  std::size_t number_of_faces = 0;
+  std::size_t number_of_flipped_faces = 0; ///< faces whose normal turned by more than 90 degrees
+  double max_vertex_distance = 0;          ///< largest distance of a smoothed vertex to the original surface
+  double mean_vertex_distance = 0;
+  /// approximate symmetric Hausdorff distance (CGAL's, `random_seed`); NaN with
+  /// `ilsa_compute_hausdorff_distance(false)`
+  double hausdorff_distance = 0;
+  bool closed = false;
+  double volume_change = 0;              ///< (V_smoothed - V_original) / V_original, closed meshes only
+  std::size_t number_of_sharp_edges = 0; ///< crease edges: sharp edges of the original (face normals more than the
+                                         ///< feature angle apart), or the constrained edges when a map is given
+  /// Two-sided distance between the original's crease edges and the same edges of the smoothed mesh: every edge of
+  /// either polyline is sampled (ends and seven inner points) and each sample is measured against the whole other
+  /// polyline. A crease cut short (an original point far from the smoothed crease) and a crease bent away from the
+  /// original (a smoothed point far from the original crease) both show.
+  double max_crease_deviation = 0;
+  double mean_crease_deviation = 0; ///< mean over the samples of both directions
+};
+
+/// \ingroup PkgPMPILSARef
+/// Compares `smoothed` with `original`, which must have the same vertices and
+/// faces in the same order (as `smooth_surface_mesh_ilsa()` leaves them).
+/// Named parameters:
+/// - `ilsa_feature_angle` (default `20`): an edge of `original` is sharp when the
+///   normals of its two faces make a larger angle, in degrees (CGAL's convention,
+///   as in `detect_sharp_edges()`); the crease deviation compares these edges;
+/// - `edge_is_constrained_map`: a map from the edges of `original` to `bool`;
+///   when given, its edges are the crease edges instead of the sharp ones;
+/// - `random_seed` (default 0): the seed of the Hausdorff distance, which
+///   samples both meshes with CGAL's `approximate_symmetric_Hausdorff_distance()`
+///   (the calling thread's CGAL default generator is reseeded for it and then
+///   restored);
+/// - `ilsa_compute_hausdorff_distance` (default `true`): `false` skips the
+///   Hausdorff distance (`hausdorff_distance` is then NaN), the costly part on
+///   large meshes: the other figures take about one AABB tree query per vertex.
+template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
+ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const TriangleMesh& smoothed,
+                                         const NamedParameters& np = parameters::default_values()) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const double feature_angle =
+      choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), internal::ILSA::defaults::feature_angle);
+  const unsigned int seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+  const bool with_hausdorff = choose_parameter(get_parameter(np, internal_np::ilsa_compute_hausdorff_distance), true);
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using P = K::Point_3;
+  using Mesh = CGAL::Surface_mesh<P>;
+  ILSA_fidelity_summary r;
+
+  // Plain double copies; both are made the same way, so their vertices and
+  // faces correspond. `copied` maps the vertices of `original` to `a`'s.
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  std::vector<std::pair<vertex_descriptor, typename Mesh::Vertex_index>> copied;
+  Mesh a, b;
+  CGAL::copy_face_graph(original, a, parameters::vertex_to_vertex_output_iterator(std::back_inserter(copied)));
+  CGAL::copy_face_graph(smoothed, b);
+  if (num_vertices(a) != num_vertices(b) || num_faces(a) != num_faces(b) || num_faces(a) == 0) return r;
+  r.number_of_faces = num_faces(a);
+
+  std::vector<P> pa(a.points().begin(), a.points().end()), pb(b.points().begin(), b.points().end());
+  const auto box = CGAL::bbox_3(pa.begin(), pa.end());
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const double scale = diagonal > 0 ? 1. / diagonal : 1.;
+
+  auto face_points = [](const Mesh& m, typename Mesh::Face_index f) {
+    const auto h = halfedge(f, m);
+    return std::array<P, 3>{m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m))};
+  };
+  auto normal = [&](const Mesh& m, typename Mesh::Face_index f) {
+    const auto t = face_points(m, f);
+    return CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+  };
+  for (auto fa = faces(a).begin(), fb = faces(b).begin(); fa != faces(a).end(); ++fa, ++fb)
+    if (normal(a, *fa) * normal(b, *fb) < 0) ++r.number_of_flipped_faces;
+
+  using Face_tree = internal::ILSA::AABB_tree_3<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>;
+  Face_tree tree(faces(a).first, faces(a).second, a);
+  for (const P& p : pb) {
+    const double d = std::sqrt(tree.squared_distance(p)) * scale;
+    r.max_vertex_distance = (std::max)(r.max_vertex_distance, d);
+    r.mean_vertex_distance += d;
+  }
+  r.mean_vertex_distance /= double(pb.size());
+
+  // CGAL's approximate symmetric Hausdorff distance. In CGAL 5.5.1 random_seed
+  // does not reach every sampler (points on edges come from CGAL's default
+  // generator), so that generator is seeded too for a repeatable distance. It
+  // is thread-local in CGAL (CGAL/Random.h), and the guard restores its state
+  // on every way out: the caller's generator is left as it was.
+  if (!with_hausdorff) {
+    r.hausdorff_distance = std::numeric_limits<double>::quiet_NaN();
+  } else {
+    struct Default_random_guard {
+      CGAL::Random saved = CGAL::get_default_random();
+      ~Default_random_guard() { CGAL::get_default_random() = saved; }
+    } guard;
+    CGAL::get_default_random() = CGAL::Random(seed);
+    const auto sampling = parameters::random_seed(seed).number_of_points_on_faces(2 * num_faces(a));
+    r.hausdorff_distance =
+        approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, sampling, sampling) * scale;
+  }
+
+  r.closed = CGAL::is_closed(a);
+  if (r.closed) {
+    const double va = CGAL::to_double(volume(a)), vb = CGAL::to_double(volume(b));
+    r.volume_change = va != 0 ? (vb - va) / std::abs(va) : 0.;
+  }
+
+  // Sharp edges of the original, and the same edges of the smoothed mesh
+  // (not the smoothed mesh's own sharp edges: an edge near the threshold could
+  // change side), compared both ways.
+  const double sharp_cosine = internal::ILSA::feature_cosine(feature_angle);
+  using Segments = std::vector<K::Segment_3>;
+  Segments original_crease, smoothed_crease;
+  // The user's crease edges, as pairs of vertices of `a`.
+  constexpr bool user_creases =
+      !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
+  std::set<std::pair<std::size_t, std::size_t>> constrained;
+  if (user_creases) {
+    using GT = boost::graph_traits<TriangleMesh>;
+    const auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
+                                      Static_boolean_property_map<typename GT::edge_descriptor, false>());
+    boost::unordered_map<vertex_descriptor, std::size_t> position;
+    for (const auto& c : copied) position.emplace(c.first, std::size_t(c.second));
+    for (auto e : edges(original))
+      if (get(ecm, e)) {
+        const std::size_t i = position.at(source(e, original)), j = position.at(target(e, original));
+        constrained.emplace((std::min)(i, j), (std::max)(i, j));
+      }
+  }
+  for (auto e : edges(a)) {
+    const auto h = halfedge(e, a);
+    if (user_creases) {
+      const std::size_t i = std::size_t(source(h, a)), j = std::size_t(target(h, a));
+      if (!constrained.count({(std::min)(i, j), (std::max)(i, j)})) continue;
+    } else {
+      if (is_border_edge(h, a)) continue;
+      auto n0 = normal(a, face(h, a)), n1 = normal(a, face(opposite(h, a), a));
+      const double l = std::sqrt(n0.squared_length() * n1.squared_length());
+      if (l == 0 || n0 * n1 / l >= sharp_cosine) continue;
+    }
+    original_crease.emplace_back(a.point(source(h, a)), a.point(target(h, a)));
+    smoothed_crease.emplace_back(pb[std::size_t(source(h, a))], pb[std::size_t(target(h, a))]);
+  }
+  r.number_of_sharp_edges = original_crease.size();
+  if (!original_crease.empty()) {
+    using Segment_tree =
+        internal::ILSA::AABB_tree_3<K, internal::ILSA::AABB_segment_primitive_3<K, typename Segments::const_iterator>>;
+    const Segment_tree original_lines(original_crease.cbegin(), original_crease.cend());
+    const Segment_tree smoothed_lines(smoothed_crease.cbegin(), smoothed_crease.cend());
+    constexpr int intervals = internal::ILSA::crease_samples;
+    std::size_t samples = 0;
+    auto measure = [&](const Segments& from, const Segment_tree& to) {
+      for (const auto& s : from)
+        for (int k = 0; k <= intervals; ++k) {
+          const double d =
+              std::sqrt(to.squared_distance(s.source() + (double(k) / intervals) * (s.target() - s.source()))) * scale;
+          r.max_crease_deviation = (std::max)(r.max_crease_deviation, d);
+          r.mean_crease_deviation += d;
+          ++samples;
+        }
+    };
+    measure(original_crease, smoothed_lines);
+    measure(smoothed_crease, original_lines);
+    r.mean_crease_deviation /= double(samples);
+  }
+  return r;
+}
+
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif
