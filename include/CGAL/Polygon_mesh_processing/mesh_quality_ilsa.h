@@ -143,6 +143,133 @@ struct ILSA_fidelity_summary {
   double mean_crease_deviation = 0; ///< mean over the samples of both directions
 };
 
+namespace internal {
+namespace ILSA {
+// The steps of mesh_fidelity_ilsa(), on plain double copies of the two meshes.
+namespace fidelity {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Segments = std::vector<Kernel::Segment_3>;
+
+inline Kernel::Vector_3 face_normal(const Mesh& m, Mesh::Face_index f) {
+  const auto h = halfedge(f, m);
+  const Point &p0 = m.point(source(h, m)), &p1 = m.point(target(h, m)), &p2 = m.point(target(next(h, m), m));
+  return CGAL::cross_product(p1 - p0, p2 - p0);
+}
+
+// Faces whose normal turned by more than 90 degrees from `a` to `b`.
+inline std::size_t flipped_faces(const Mesh& a, const Mesh& b) {
+  std::size_t flipped = 0;
+  for (auto fa = faces(a).begin(), fb = faces(b).begin(); fa != faces(a).end(); ++fa, ++fb)
+    if (face_normal(a, *fa) * face_normal(b, *fb) < 0) ++flipped;
+  return flipped;
+}
+
+// Largest and mean distance of the points `pb` to the surface of `a`.
+inline void vertex_distances(const Mesh& a, const std::vector<Point>& pb, double scale, ILSA_fidelity_summary& r) {
+  using Face_tree = AABB_tree_3<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>;
+  Face_tree tree(faces(a).first, faces(a).second, a);
+  for (const Point& p : pb) {
+    const double d = std::sqrt(tree.squared_distance(p)) * scale;
+    r.max_vertex_distance = (std::max)(r.max_vertex_distance, d);
+    r.mean_vertex_distance += d;
+  }
+  r.mean_vertex_distance /= double(pb.size());
+}
+
+// CGAL's approximate symmetric Hausdorff distance. In CGAL 5.5.1 random_seed
+// does not reach every sampler (points on edges come from CGAL's default
+// generator), so that generator is seeded too for a repeatable distance. It
+// is thread-local in CGAL (CGAL/Random.h), and the guard restores its state
+// on every way out: the caller's generator is left as it was.
+inline double hausdorff_distance(const Mesh& a, const Mesh& b, unsigned int seed, double scale) {
+  struct Default_random_guard {
+    CGAL::Random saved = CGAL::get_default_random();
+    ~Default_random_guard() { CGAL::get_default_random() = saved; }
+  } guard;
+  CGAL::get_default_random() = CGAL::Random(seed);
+  const auto sampling = parameters::random_seed(seed).number_of_points_on_faces(2 * num_faces(a));
+  return approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, sampling, sampling) * scale;
+}
+
+// The edges of `original` that `edge_is_constrained_map` marks, as ordered
+// pairs of vertices of its copy (`copied` maps the vertices).
+template <class TriangleMesh, class NamedParameters, class Copied>
+std::set<std::pair<std::size_t, std::size_t>> constrained_edges(const TriangleMesh& original, const NamedParameters& np,
+                                                                const Copied& copied) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using GT = boost::graph_traits<TriangleMesh>;
+  const auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
+                                    Static_boolean_property_map<typename GT::edge_descriptor, false>());
+  boost::unordered_map<typename GT::vertex_descriptor, std::size_t> position;
+  for (const auto& c : copied) position.emplace(c.first, std::size_t(c.second));
+  std::set<std::pair<std::size_t, std::size_t>> constrained;
+  for (auto e : edges(original))
+    if (get(ecm, e)) {
+      const std::size_t i = position.at(source(e, original)), j = position.at(target(e, original));
+      constrained.emplace((std::min)(i, j), (std::max)(i, j));
+    }
+  return constrained;
+}
+
+// The crease edges of `a` (the constrained ones when `user_creases`, else the
+// sharp ones: face normals more than the feature angle apart), and the same
+// edges with the points `pb` (not the smoothed mesh's own sharp edges: an edge
+// near the threshold could change side).
+inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vector<Point>& pb, bool user_creases,
+                                                  const std::set<std::pair<std::size_t, std::size_t>>& constrained,
+                                                  double feature_angle) {
+  const double sharp_cosine = feature_cosine(feature_angle);
+  std::pair<Segments, Segments> creases;
+  for (auto e : edges(a)) {
+    const auto h = halfedge(e, a);
+    if (user_creases) {
+      const std::size_t i = std::size_t(source(h, a)), j = std::size_t(target(h, a));
+      if (!constrained.count({(std::min)(i, j), (std::max)(i, j)})) continue;
+    } else {
+      if (is_border_edge(h, a)) continue;
+      auto n0 = face_normal(a, face(h, a)), n1 = face_normal(a, face(opposite(h, a), a));
+      const double l = std::sqrt(n0.squared_length() * n1.squared_length());
+      if (l == 0 || n0 * n1 / l >= sharp_cosine) continue;
+    }
+    creases.first.emplace_back(a.point(source(h, a)), a.point(target(h, a)));
+    creases.second.emplace_back(pb[std::size_t(source(h, a))], pb[std::size_t(target(h, a))]);
+  }
+  return creases;
+}
+
+// Two-sided distance between the two crease polylines: every edge of either
+// is sampled (ends and crease_samples - 1 inner points), each sample measured
+// against the whole other polyline.
+inline void crease_deviation(const Segments& original_crease, const Segments& smoothed_crease, double scale,
+                             ILSA_fidelity_summary& r) {
+  using Segment_tree = AABB_tree_3<Kernel, AABB_segment_primitive_3<Kernel, typename Segments::const_iterator>>;
+  const Segment_tree original_lines(original_crease.cbegin(), original_crease.cend());
+  const Segment_tree smoothed_lines(smoothed_crease.cbegin(), smoothed_crease.cend());
+  constexpr int intervals = crease_samples;
+  std::size_t samples = 0;
+  auto measure = [&](const Segments& from, const Segment_tree& to) {
+    for (const auto& s : from)
+      for (int k = 0; k <= intervals; ++k) {
+        const double d =
+            std::sqrt(to.squared_distance(s.source() + (double(k) / intervals) * (s.target() - s.source()))) * scale;
+        r.max_crease_deviation = (std::max)(r.max_crease_deviation, d);
+        r.mean_crease_deviation += d;
+        ++samples;
+      }
+  };
+  measure(original_crease, smoothed_lines);
+  measure(smoothed_crease, original_lines);
+  r.mean_crease_deviation /= double(samples);
+}
+
+} // namespace fidelity
+} // namespace ILSA
+} // namespace internal
+
 /// \ingroup PkgPMPILSARef
 /// Compares `smoothed` with `original`, which must have the same vertices and
 /// faces in the same order (as `smooth_surface_mesh_ilsa()` leaves them).
@@ -164,133 +291,47 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
                                          const NamedParameters& np = parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
+  namespace fidelity = internal::ILSA::fidelity;
   const double feature_angle =
       choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), internal::ILSA::defaults::feature_angle);
   const unsigned int seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
   const bool with_hausdorff = choose_parameter(get_parameter(np, internal_np::ilsa_compute_hausdorff_distance), true);
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using P = K::Point_3;
-  using Mesh = CGAL::Surface_mesh<P>;
   ILSA_fidelity_summary r;
 
   // Plain double copies; both are made the same way, so their vertices and
   // faces correspond. `copied` maps the vertices of `original` to `a`'s.
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  std::vector<std::pair<vertex_descriptor, typename Mesh::Vertex_index>> copied;
-  Mesh a, b;
+  std::vector<std::pair<vertex_descriptor, fidelity::Mesh::Vertex_index>> copied;
+  fidelity::Mesh a, b;
   CGAL::copy_face_graph(original, a, parameters::vertex_to_vertex_output_iterator(std::back_inserter(copied)));
   CGAL::copy_face_graph(smoothed, b);
   if (num_vertices(a) != num_vertices(b) || num_faces(a) != num_faces(b) || num_faces(a) == 0) return r;
   r.number_of_faces = num_faces(a);
 
-  std::vector<P> pa(a.points().begin(), a.points().end()), pb(b.points().begin(), b.points().end());
+  const std::vector<fidelity::Point> pa(a.points().begin(), a.points().end()), pb(b.points().begin(), b.points().end());
   const auto box = CGAL::bbox_3(pa.begin(), pa.end());
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                     CGAL::square(box.zmax() - box.zmin()));
   const double scale = diagonal > 0 ? 1. / diagonal : 1.;
 
-  auto face_points = [](const Mesh& m, typename Mesh::Face_index f) {
-    const auto h = halfedge(f, m);
-    return std::array<P, 3>{m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m))};
-  };
-  auto normal = [&](const Mesh& m, typename Mesh::Face_index f) {
-    const auto t = face_points(m, f);
-    return CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
-  };
-  for (auto fa = faces(a).begin(), fb = faces(b).begin(); fa != faces(a).end(); ++fa, ++fb)
-    if (normal(a, *fa) * normal(b, *fb) < 0) ++r.number_of_flipped_faces;
-
-  using Face_tree = internal::ILSA::AABB_tree_3<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>;
-  Face_tree tree(faces(a).first, faces(a).second, a);
-  for (const P& p : pb) {
-    const double d = std::sqrt(tree.squared_distance(p)) * scale;
-    r.max_vertex_distance = (std::max)(r.max_vertex_distance, d);
-    r.mean_vertex_distance += d;
-  }
-  r.mean_vertex_distance /= double(pb.size());
-
-  // CGAL's approximate symmetric Hausdorff distance. In CGAL 5.5.1 random_seed
-  // does not reach every sampler (points on edges come from CGAL's default
-  // generator), so that generator is seeded too for a repeatable distance. It
-  // is thread-local in CGAL (CGAL/Random.h), and the guard restores its state
-  // on every way out: the caller's generator is left as it was.
-  if (!with_hausdorff) {
-    r.hausdorff_distance = std::numeric_limits<double>::quiet_NaN();
-  } else {
-    struct Default_random_guard {
-      CGAL::Random saved = CGAL::get_default_random();
-      ~Default_random_guard() { CGAL::get_default_random() = saved; }
-    } guard;
-    CGAL::get_default_random() = CGAL::Random(seed);
-    const auto sampling = parameters::random_seed(seed).number_of_points_on_faces(2 * num_faces(a));
-    r.hausdorff_distance =
-        approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, sampling, sampling) * scale;
-  }
-
+  r.number_of_flipped_faces = fidelity::flipped_faces(a, b);
+  fidelity::vertex_distances(a, pb, scale, r);
+  r.hausdorff_distance =
+      with_hausdorff ? fidelity::hausdorff_distance(a, b, seed, scale) : std::numeric_limits<double>::quiet_NaN();
   r.closed = CGAL::is_closed(a);
   if (r.closed) {
     const double va = CGAL::to_double(volume(a)), vb = CGAL::to_double(volume(b));
     r.volume_change = va != 0 ? (vb - va) / std::abs(va) : 0.;
   }
 
-  // Sharp edges of the original, and the same edges of the smoothed mesh
-  // (not the smoothed mesh's own sharp edges: an edge near the threshold could
-  // change side), compared both ways.
-  const double sharp_cosine = internal::ILSA::feature_cosine(feature_angle);
-  using Segments = std::vector<K::Segment_3>;
-  Segments original_crease, smoothed_crease;
-  // The user's crease edges, as pairs of vertices of `a`.
   constexpr bool user_creases =
       !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
-  std::set<std::pair<std::size_t, std::size_t>> constrained;
-  if (user_creases) {
-    using GT = boost::graph_traits<TriangleMesh>;
-    const auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
-                                      Static_boolean_property_map<typename GT::edge_descriptor, false>());
-    boost::unordered_map<vertex_descriptor, std::size_t> position;
-    for (const auto& c : copied) position.emplace(c.first, std::size_t(c.second));
-    for (auto e : edges(original))
-      if (get(ecm, e)) {
-        const std::size_t i = position.at(source(e, original)), j = position.at(target(e, original));
-        constrained.emplace((std::min)(i, j), (std::max)(i, j));
-      }
-  }
-  for (auto e : edges(a)) {
-    const auto h = halfedge(e, a);
-    if (user_creases) {
-      const std::size_t i = std::size_t(source(h, a)), j = std::size_t(target(h, a));
-      if (!constrained.count({(std::min)(i, j), (std::max)(i, j)})) continue;
-    } else {
-      if (is_border_edge(h, a)) continue;
-      auto n0 = normal(a, face(h, a)), n1 = normal(a, face(opposite(h, a), a));
-      const double l = std::sqrt(n0.squared_length() * n1.squared_length());
-      if (l == 0 || n0 * n1 / l >= sharp_cosine) continue;
-    }
-    original_crease.emplace_back(a.point(source(h, a)), a.point(target(h, a)));
-    smoothed_crease.emplace_back(pb[std::size_t(source(h, a))], pb[std::size_t(target(h, a))]);
-  }
-  r.number_of_sharp_edges = original_crease.size();
-  if (!original_crease.empty()) {
-    using Segment_tree =
-        internal::ILSA::AABB_tree_3<K, internal::ILSA::AABB_segment_primitive_3<K, typename Segments::const_iterator>>;
-    const Segment_tree original_lines(original_crease.cbegin(), original_crease.cend());
-    const Segment_tree smoothed_lines(smoothed_crease.cbegin(), smoothed_crease.cend());
-    constexpr int intervals = internal::ILSA::crease_samples;
-    std::size_t samples = 0;
-    auto measure = [&](const Segments& from, const Segment_tree& to) {
-      for (const auto& s : from)
-        for (int k = 0; k <= intervals; ++k) {
-          const double d =
-              std::sqrt(to.squared_distance(s.source() + (double(k) / intervals) * (s.target() - s.source()))) * scale;
-          r.max_crease_deviation = (std::max)(r.max_crease_deviation, d);
-          r.mean_crease_deviation += d;
-          ++samples;
-        }
-    };
-    measure(original_crease, smoothed_lines);
-    measure(smoothed_crease, original_lines);
-    r.mean_crease_deviation /= double(samples);
-  }
+  const auto creases = fidelity::crease_edges(a, pb, user_creases,
+                                              user_creases ? fidelity::constrained_edges(original, np, copied)
+                                                           : std::set<std::pair<std::size_t, std::size_t>>(),
+                                              feature_angle);
+  r.number_of_sharp_edges = creases.first.size();
+  if (!creases.first.empty()) fidelity::crease_deviation(creases.first, creases.second, scale, r);
   return r;
 }
 
