@@ -6,10 +6,10 @@
 // `ilsa_*` member functions in one file only. The program must link, and the
 // smoothing must give the same points whichever file built its parameters.
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "test_ilsa_mixed_build.h"
+
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/tangential_relaxation.h>
-#include <CGAL/Surface_mesh.h>
 
 #ifdef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE
 #error "this file must be compiled with CGAL's own list of named parameters"
@@ -18,16 +18,6 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
-#include <vector>
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using Iterations = decltype(CGAL::parameters::number_of_iterations(3));
-
-// Defined in test_ilsa_mixed_build_package.cpp.
-std::vector<Kernel::Point_3> smooth_with(const Mesh& input, const Iterations& np);
-std::vector<Kernel::Point_3> smooth_with_own_parameters(const Mesh& input);
-std::size_t iterations_of_chained_parameters(const Mesh& input);
 
 #define ILSA_CHECK(condition)                                                                                          \
   do {                                                                                                                 \

@@ -1,19 +1,13 @@
 // The half of test_ilsa_mixed_build compiled with the package's include
 // directory first (see test_ilsa_mixed_build.cpp).
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
-#include <CGAL/Surface_mesh.h>
+
+#include "test_ilsa_mixed_build.h"
 
 #ifndef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE
 #error "this file must be compiled with the package's list of named parameters"
 #endif
-
-#include <vector>
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-using Iterations = decltype(CGAL::parameters::number_of_iterations(3));
 
 std::vector<Kernel::Point_3> smooth_with(const Mesh& input, const Iterations& np) {
   Mesh mesh = input;
