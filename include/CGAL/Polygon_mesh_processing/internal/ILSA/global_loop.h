@@ -231,7 +231,7 @@ private:
   std::vector<Vec3> pos_, next_, d_;
   std::vector<Index> home_, next_home_, moved_;
   std::vector<unsigned char> guarded_, skipped_;
-  Ilsa_workspace workspace_;
+  ILSA_workspace workspace_;
   bool limit_retries_ = false;
   double retry_length_ = 0;
   // settled_[v]: the length the neighbours of `v` have travelled since it

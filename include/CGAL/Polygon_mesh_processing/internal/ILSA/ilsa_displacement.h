@@ -64,7 +64,7 @@ inline ILSA_neighborhoods make_neighborhoods(const Flat_mesh& m, const Vertex_cl
 }
 
 /// Buffers reused across iterations, so the sweeps do not allocate.
-struct Ilsa_workspace {
+struct ILSA_workspace {
   std::vector<double> weights; // α_ij, per edge (the weight of an edge is the same from both ends)
 };
 
@@ -74,7 +74,7 @@ struct Ilsa_workspace {
 /// (the caller lends any per-vertex array it does not need meanwhile).
 template <class ConcurrencyTag>
 std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const ILSA_neighborhoods& nb, double relax1,
-                                      std::size_t sweeps, double tolerance, std::vector<Vec3>& d, Ilsa_workspace& ws,
+                                      std::size_t sweeps, double tolerance, std::vector<Vec3>& d, ILSA_workspace& ws,
                                       std::vector<Vec3>& buffer) {
   const Flat_mesh& m = *nb.mesh;
   d.assign(pos.size(), Vec3::Zero());
