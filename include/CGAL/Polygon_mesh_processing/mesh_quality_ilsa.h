@@ -152,6 +152,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Segments = std::vector<Kernel::Segment_3>;
+using Vertex_pairs = std::set<std::pair<std::size_t, std::size_t>>; // (lower, higher) vertex of each edge
 
 inline Kernel::Vector_3 face_normal(const Mesh& m, Mesh::Face_index f) {
   const auto h = halfedge(f, m);
@@ -197,8 +198,7 @@ inline double hausdorff_distance(const Mesh& a, const Mesh& b, unsigned int seed
 // The edges of `original` that `edge_is_constrained_map` marks, as ordered
 // pairs of vertices of its copy (`copied` maps the vertices).
 template <class TriangleMesh, class NamedParameters, class Copied>
-std::set<std::pair<std::size_t, std::size_t>> constrained_edges(const TriangleMesh& original, const NamedParameters& np,
-                                                                const Copied& copied) {
+Vertex_pairs constrained_edges(const TriangleMesh& original, const NamedParameters& np, const Copied& copied) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using GT = boost::graph_traits<TriangleMesh>;
@@ -206,7 +206,7 @@ std::set<std::pair<std::size_t, std::size_t>> constrained_edges(const TriangleMe
                                     Static_boolean_property_map<typename GT::edge_descriptor, false>());
   boost::unordered_map<typename GT::vertex_descriptor, std::size_t> position;
   for (const auto& c : copied) position.emplace(c.first, std::size_t(c.second));
-  std::set<std::pair<std::size_t, std::size_t>> constrained;
+  Vertex_pairs constrained;
   for (auto e : edges(original))
     if (get(ecm, e)) {
       const std::size_t i = position.at(source(e, original)), j = position.at(target(e, original));
@@ -220,8 +220,7 @@ std::set<std::pair<std::size_t, std::size_t>> constrained_edges(const TriangleMe
 // edges with the points `pb` (not the smoothed mesh's own sharp edges: an edge
 // near the threshold could change side).
 inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vector<Point>& pb, bool user_creases,
-                                                  const std::set<std::pair<std::size_t, std::size_t>>& constrained,
-                                                  double feature_angle) {
+                                                  const Vertex_pairs& constrained, double feature_angle) {
   const double sharp_cosine = feature_cosine(feature_angle);
   std::pair<Segments, Segments> creases;
   for (auto e : edges(a)) {
@@ -326,10 +325,9 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
 
   constexpr bool user_creases =
       !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
-  const auto creases = fidelity::crease_edges(a, pb, user_creases,
-                                              user_creases ? fidelity::constrained_edges(original, np, copied)
-                                                           : std::set<std::pair<std::size_t, std::size_t>>(),
-                                              feature_angle);
+  const auto creases = fidelity::crease_edges(
+      a, pb, user_creases, user_creases ? fidelity::constrained_edges(original, np, copied) : fidelity::Vertex_pairs(),
+      feature_angle);
   r.number_of_sharp_edges = creases.first.size();
   if (!creases.first.empty()) fidelity::crease_deviation(creases.first, creases.second, scale, r);
   return r;
