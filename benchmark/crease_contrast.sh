@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The crease contrast (user manual, "Crease contrast") on every bundled mesh,
 # and every mesh of ../shared/data when it exists: one Markdown row per mesh,
-# one cell per contrast with mean q / Hausdorff distance / ridge vertices /
+# one cell per contrast with mean q / Hausdorff distance / crease deviation
+# (along the crease lines the contrast keeps) / deviation along every edge
+# beyond the feature angle (the same with a contrast of 0) / ridge vertices /
 # fixed vertices (corner and boundary), the fidelity tolerance the default or
 # the one given for the mesh.
 #
@@ -36,9 +38,11 @@ for mesh in "${meshes[@]}"; do
     out=$("$tool" "$mesh" "$work/out.off" "${flags[@]}" --crease-contrast "$c" 2>&1) || { row+=" failed |"; continue; }
     q=$(sed -nE 's/^after : aspect ratio q min [0-9.]+ mean ([0-9.]+).*/\1/p' <<<"$out")
     h=$(sed -nE 's/.*Hausdorff ([0-9.e+-]+),.*/\1/p' <<<"$out")
+    crease=$(sed -nE 's/.*crease deviation \([0-9]+ sharp edges, both ways\) max ([0-9.e+-]+).*/\1/p' <<<"$out")
+    lines=$(sed -nE 's/^feature lines without the contrast: .* max ([0-9.e+-]+) mean.*/\1/p' <<<"$out")
     ridge=$(sed -nE 's/^vertices: .* ([0-9]+) ridge.*/\1/p' <<<"$out")
     fixed=$(sed -nE 's/^vertices: .* ([0-9]+) corner \([0-9]+ crease kinks\), ([0-9]+) boundary/\1+\2/p' <<<"$out")
-    row+=" $q / $h / $ridge / $((fixed)) |"
+    row+=" $q / $h / $crease / ${lines:-$crease} / $ridge / $((fixed)) |"
   done
   echo "$row"
 done

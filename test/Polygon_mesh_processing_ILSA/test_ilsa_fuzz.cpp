@@ -404,7 +404,8 @@ int main() {
                        ? PMP::mesh_fidelity_ilsa(original, m,
                                                  CGAL::parameters::ilsa_feature_angle(angle).edge_is_constrained_map(
                                                      boost::make_assoc_property_map(constrained_edges)))
-                       : PMP::mesh_fidelity_ilsa(original, m, CGAL::parameters::ilsa_feature_angle(angle));
+                       : PMP::mesh_fidelity_ilsa(
+                             original, m, CGAL::parameters::ilsa_feature_angle(angle).ilsa_crease_contrast(contrast));
     // No face ends below the input's minimum or the floor, whichever is lower
     // (up to the rounding of writing back the package's normalised coordinates).
     const double effective_floor = monotone ? 1. : default_floor ? (std::max)(0.5, before.min_aspect_ratio) : floor;

@@ -134,7 +134,8 @@ struct ILSA_fidelity_summary {
   bool closed = false;
   double volume_change = 0;              ///< (V_smoothed - V_original) / V_original, closed meshes only
   std::size_t number_of_sharp_edges = 0; ///< crease edges: sharp edges of the original (face normals more than the
-                                         ///< feature angle apart), or the constrained edges when a map is given
+                                         ///< feature angle apart, kept by the crease contrast when one is given),
+                                         ///< or the constrained edges when a map is given
   /// Two-sided distance between the original's crease edges and the same edges of the smoothed mesh: every edge of
   /// either polyline is sampled (ends and seven inner points) and each sample is measured against the whole other
   /// polyline. A crease cut short (an original point far from the smoothed crease) and a crease bent away from the
@@ -216,12 +217,28 @@ Vertex_pairs constrained_edges(const TriangleMesh& original, const NamedParamete
 }
 
 // The crease edges of `a` (the constrained ones when `user_creases`, else the
-// sharp ones: face normals more than the feature angle apart), and the same
+// sharp ones: face normals more than the feature angle apart and, with a
+// crease `contrast` above 0, kept by keeps_crease_contrast()), and the same
 // edges with the points `pb` (not the smoothed mesh's own sharp edges: an edge
 // near the threshold could change side).
 inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vector<Point>& pb, bool user_creases,
-                                                  const Vertex_pairs& constrained, double feature_angle) {
+                                                  const Vertex_pairs& constrained, double feature_angle,
+                                                  double contrast) {
   const double sharp_cosine = feature_cosine(feature_angle);
+  // The angle between the face normals of each edge (0 on the border).
+  std::vector<double> angle(num_edges(a), 0.);
+  if (!user_creases)
+    for (auto e : edges(a)) {
+      const auto h = halfedge(e, a);
+      if (is_border_edge(h, a)) continue;
+      auto n0 = face_normal(a, face(h, a)), n1 = face_normal(a, face(opposite(h, a), a));
+      const double l = std::sqrt(n0.squared_length() * n1.squared_length());
+      angle[std::size_t(e)] = l == 0 ? 0. : normal_angle(n0 * n1 / l);
+    }
+  // The angle of the flatter of the two edges of the face of `h` other than `h`'s.
+  auto flatter = [&](Mesh::Halfedge_index h) {
+    return (std::min)(angle[std::size_t(edge(next(h, a), a))], angle[std::size_t(edge(prev(h, a), a))]);
+  };
   std::pair<Segments, Segments> creases;
   for (auto e : edges(a)) {
     const auto h = halfedge(e, a);
@@ -233,6 +250,8 @@ inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vect
       auto n0 = face_normal(a, face(h, a)), n1 = face_normal(a, face(opposite(h, a), a));
       const double l = std::sqrt(n0.squared_length() * n1.squared_length());
       if (l == 0 || n0 * n1 / l >= sharp_cosine) continue;
+      if (contrast > 0 && !keeps_crease_contrast(angle[std::size_t(e)], flatter(h), flatter(opposite(h, a)), contrast))
+        continue;
     }
     creases.first.emplace_back(a.point(source(h, a)), a.point(target(h, a)));
     creases.second.emplace_back(pb[std::size_t(source(h, a))], pb[std::size_t(target(h, a))]);
@@ -276,6 +295,9 @@ inline void crease_deviation(const Segments& original_crease, const Segments& sm
 /// - `ilsa_feature_angle` (default `20`): an edge of `original` is sharp when the
 ///   normals of its two faces make a larger angle, in degrees (CGAL's convention,
 ///   as in `detect_sharp_edges()`); the crease deviation compares these edges;
+/// - `ilsa_crease_contrast` (default `0`): with a contrast above 0, only the
+///   sharp edges that keep it, as in `smooth_surface_mesh_ilsa()` (user manual,
+///   "Crease contrast"): pass the smoother's value to measure its crease lines;
 /// - `edge_is_constrained_map`: a map from the edges of `original` to `bool`;
 ///   when given, its edges are the crease edges instead of the sharp ones;
 /// - `random_seed` (default 0): the seed of the Hausdorff distance, which
@@ -295,6 +317,8 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
       choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), internal::ILSA::defaults::feature_angle);
   const unsigned int seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
   const bool with_hausdorff = choose_parameter(get_parameter(np, internal_np::ilsa_compute_hausdorff_distance), true);
+  const double contrast =
+      choose_parameter(get_parameter(np, internal_np::ilsa_crease_contrast), internal::ILSA::defaults::crease_contrast);
   ILSA_fidelity_summary r;
 
   // Plain double copies; both are made the same way, so their vertices and
@@ -327,7 +351,7 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
       !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
   const auto creases = fidelity::crease_edges(
       a, pb, user_creases, user_creases ? fidelity::constrained_edges(original, np, copied) : fidelity::Vertex_pairs(),
-      feature_angle);
+      feature_angle, contrast);
   r.number_of_sharp_edges = creases.first.size();
   if (!creases.first.empty()) fidelity::crease_deviation(creases.first, creases.second, scale, r);
   return r;

@@ -165,8 +165,9 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *     \cgalParamDescription{an edge whose face normals are more than `ilsa_feature_angle` apart is sharp only if
  * their angle is at least this many times that of the flatter of the two other edges of each of its faces: on a
  * crease of a CAD model one of these lies in a smooth part, on a coarse curved surface they bend as much as the edge
- * (user manual, "Crease contrast"; not in the paper). `0` makes every such edge between two ridge candidates sharp,
- * the paper's rule. Ignored with an `edge_is_constrained_map`}
+ * (user manual, "Crease contrast"; not in the paper). An edge it drops is curvature, not a crease line: neither
+ * sharp nor held by the crease bound of `ilsa_fidelity_tolerance`. `0` makes every such edge between two ridge
+ * candidates sharp, the paper's rule. Ignored with an `edge_is_constrained_map`}
  *     \cgalParamType{`double`, non-negative and finite}
  *     \cgalParamDefault{`0`}
  *   \cgalParamNEnd
@@ -242,9 +243,9 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  * vertex or of a neighbour to the smoothed faces around it (a bump or a crease bend cut off), or from the centroid and
  * edge midpoints of the faces around the vertex to the input faces around them (a chord over a fold). The same bound
  * holds along the feature lines, both ways: the input's sharp edges (or constrained edges) and the edges whose face
- * normals are more than `ilsa_feature_angle` apart may not move farther than it from their input position, nor their
- * input points end farther than it from them. Relative to the bounding-box diagonal.
- * `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no such bound)}
+ * normals are more than `ilsa_feature_angle` apart (with a crease contrast, those it keeps) may not move farther than
+ * it from their input position, nor their input points end farther than it from them. Relative to the bounding-box
+ * diagonal. `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no such bound)}
  * \cgalParamType{`double`, positive} \cgalParamDefault{`3e-4`} \cgalParamNEnd \cgalParamNBegin{callback}
  *     \cgalParamDescription{called after each iteration with the advancement, the iterations run over
  * `number_of_iterations` (the last call may come before 1 when the run stops early); when it returns `false`, the

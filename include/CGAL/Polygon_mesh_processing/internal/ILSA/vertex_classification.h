@@ -60,6 +60,7 @@ struct Vertex_classification {
   std::vector<ILSA_vertex_type> type;
   std::vector<Index> crease_of_edge;                // crease polyline of a sharp edge, npos for the other edges
   std::vector<unsigned char> feature_edge;          // sharp, or (without the user's edge map) dihedral angle below θ_f
+                                                    // and, with a crease contrast, kept by it
   std::vector<std::array<Index, 2>> attached_edges; // a ridge vertex's two sharp edges
   std::size_t number_of_kinks = 0;                  // vertices with two sharp edges fixed as kinks
 
@@ -83,20 +84,20 @@ struct Classification_options {
   const std::vector<unsigned char>* constrained_edges = nullptr;    // user's edge_is_constrained_map
 };
 
-/// The crease contrast (user manual, "Crease contrast"): keeps a sharp edge
-/// only if its angle between face normals is at least `contrast` times the
-/// angle of the flatter of the two other edges of each of its faces. On a
-/// crease of a CAD model at least one of these edges lies in a smooth part of
-/// the surface; on a coarse curved surface they bend as much as the edge.
-/// `curved` is set for the ends of the edges it drops.
+/// The crease contrast (user manual, "Crease contrast"): keeps a feature edge
+/// (and a sharp edge) only if keeps_crease_contrast() says so. A feature edge
+/// it drops is curvature, not a crease line: it is no longer a feature edge,
+/// so the crease bound of the safety check does not hold it either. `curved`
+/// is set for the ends of the sharp edges it drops.
 inline void keep_contrasted_creases(const Flat_mesh& m, const Set_up_incidences& incidences,
                                     const std::vector<Vec3>& face_normals, double contrast,
-                                    std::vector<unsigned char>& sharp_edge, std::vector<unsigned char>& curved) {
+                                    std::vector<unsigned char>& feature_edge, std::vector<unsigned char>& sharp_edge,
+                                    std::vector<unsigned char>& curved) {
   const std::size_t ne = m.edges.size();
   auto angle_of = [&](std::size_t e) {
     const auto& fs = incidences.edge_faces[e];
     if (fs[0] == npos || fs[1] == npos) return 0.;
-    return std::acos((std::max)(-1., (std::min)(1., face_normals[fs[0]].dot(face_normals[fs[1]]))));
+    return normal_angle(face_normals[fs[0]].dot(face_normals[fs[1]]));
   };
   // The edge from `a` to `b` (vertex_neighbors is sorted), or npos.
   auto edge_between = [&](Index a, Index b) {
@@ -119,10 +120,11 @@ inline void keep_contrasted_creases(const Flat_mesh& m, const Set_up_incidences&
     return flatter == std::numeric_limits<double>::infinity() ? 0. : flatter;
   };
   for (std::size_t e = 0; e < ne; ++e) {
-    if (!sharp_edge[e]) continue;
+    if (!feature_edge[e] && !sharp_edge[e]) continue;
     const auto& fs = incidences.edge_faces[e];
-    const double around = (std::max)(wing(fs[0], e), wing(fs[1], e));
-    if (angle[e] < contrast * around) sharp_edge[e] = 0, curved[m.edges[e][0]] = curved[m.edges[e][1]] = 1;
+    if (keeps_crease_contrast(angle[e], wing(fs[0], e), wing(fs[1], e), contrast)) continue;
+    feature_edge[e] = 0;
+    if (sharp_edge[e]) sharp_edge[e] = 0, curved[m.edges[e][0]] = curved[m.edges[e][1]] = 1;
   }
 }
 
@@ -153,7 +155,8 @@ inline void mark_fixed_and_candidates(const Flat_mesh& m, const Set_up_incidence
 
 /// Feature edges (face normals more than the feature angle apart) and sharp
 /// edges (feature edges between two ridge candidates, paper §3, or the user's
-/// constrained edges), with the crease contrast when it is set.
+/// constrained edges); with a crease contrast, the feature edges it drops are
+/// neither.
 inline void mark_feature_and_sharp_edges(const Flat_mesh& m, const Set_up_incidences& incidences,
                                          const Classification_options& opt, Vertex_classification& c,
                                          Classification_work& w) {
@@ -174,7 +177,7 @@ inline void mark_feature_and_sharp_edges(const Flat_mesh& m, const Set_up_incide
   }
   if (!opt.constrained_edges && opt.crease_contrast > 0) {
     w.curved.assign(m.number_of_vertices(), 0);
-    keep_contrasted_creases(m, incidences, w.face_normals, opt.crease_contrast, w.sharp_edge, w.curved);
+    keep_contrasted_creases(m, incidences, w.face_normals, opt.crease_contrast, c.feature_edge, w.sharp_edge, w.curved);
   }
   for (std::size_t e = 0; e < m.edges.size(); ++e) c.feature_edge[e] = c.feature_edge[e] || w.sharp_edge[e];
 }
