@@ -33,6 +33,7 @@ KINK=${KINK:-"default"} # "default": the library's (the feature angle); 180: the
 GAIN=${GAIN:-"1e-4"} # stop once an iteration raises the mean q by less; 0: no such stop
 REMAINING=${REMAINING:-"2e-3"} # stop once an iteration's gain times the iterations left is below; 0: no such stop
 THREADS=${THREADS:-""} # threads of the tool; empty: its default (every core), 1: sequential
+CONTRAST=${CONTRAST:-"default"} # ilsa_crease_contrast: "default": the library's; 0: the paper's rule
 RETRY=${RETRY:-"0.03"} # retry distance of moves dropped as worsening (mean edge lengths); 0: retried in the next iteration
 
 printf '%-22s %5s %5s %6s %6s %6s %5s %5s %6s %3s %7s %6s %3s %7s %6s %6s %6s | %7s %7s %7s %7s %4s %9s %9s %6s %6s %5s %7s\n' \
@@ -42,7 +43,7 @@ for it in $ITERATIONS; do for st in $STEPS; do for r1 in $RELAX1; do for r2 in $
 for mu in $MU; do for wl in $WL; do for wa in $WA; do for an in $ANGLE; do for fx in $UNATTACHED; do for fl in $FLOOR; do for tl in $TOL; do for rj in $REJECT; do for kk in $KINK; do for gn in $GAIN; do for rg in $REMAINING; do for rt in $RETRY; do
   out=$("$tool" "$mesh" --iterations "$it" --relaxation-steps "$st" --relax1 "$r1" --relax2 "$r2" --mu "$mu" \
         --wl "$wl" --wa "$wa" --feature-angle "$an" --fix-unattached "$fx" --fidelity-tolerance "$tl" --reject-worsening "$rj" --min-gain "$gn" --min-remaining-gain "$rg" --retry-distance "$rt" \
-        $([ -z "$THREADS" ] || echo --threads "$THREADS") \
+        $([ -z "$THREADS" ] || echo --threads "$THREADS") $([ "$CONTRAST" = default ] || echo --crease-contrast "$CONTRAST") \
         $([ "$fl" = default ] || echo --quality-floor "$fl") $([ "$kk" = default ] || echo --kink-angle "$kk"))
   after=$(grep '^after' <<<"$out")
   qmin=$(sed -E 's/.*q min ([0-9.]+).*/\1/' <<<"$after")

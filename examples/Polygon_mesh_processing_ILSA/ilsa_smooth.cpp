@@ -105,7 +105,7 @@ const char* usage =
     "  --feature-angle DEG     an edge is sharp when its face normals differ by more, [0,180) (default 20)\n"
     "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
     "  --crease-contrast X     a sharp edge must bend X times more than the flatter other edge\n"
-    "                          of each of its faces, >= 0, 0: every one (default 0)\n"
+    "                          of each of its faces, >= 0, 0: every one (the paper) (default 5)\n"
     "  --kink-angle DEG        fix a crease vertex where the crease turns by more, [0,180],\n"
     "                          180 disables (default: the feature angle)\n"
     "  --no-project            do not project back onto the input surface\n"

@@ -75,7 +75,8 @@ template <class Mesh> void test_fandisk() {
   // Candidates without a sharp edge: with the paper's rule fandisk has 2 of
   // them; smoothing them turns exactly those into smooth vertices.
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Type> relaxed;
-  const auto paper = CGAL::parameters::ilsa_crease_kink_angle(180.); // the paper's four-type rule, no kinks
+  const auto paper = // the paper's four-type rule: no crease contrast, no kinks
+      CGAL::parameters::ilsa_crease_kink_angle(180.).ilsa_crease_contrast(0.);
   const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(relaxed),
                                              paper.ilsa_fix_unattached_candidates(false));
   assert(s.number_of_corner_vertices == 36);
@@ -109,21 +110,22 @@ void test_horse_counts() {
   const Surface_mesh m = read_mesh<Surface_mesh>(data_file("horse.ply"));
   std::map<Surface_mesh::Vertex_index, Type> types;
   const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types),
-                                             CGAL::parameters::ilsa_crease_kink_angle(180.));
+                                             CGAL::parameters::ilsa_crease_kink_angle(180.).ilsa_crease_contrast(0.));
   assert(s.number_of_ridge_vertices == 1698);
   assert(s.number_of_corner_vertices == 2792);
   assert(s.number_of_smooth_vertices == 48485 - 1698 - 2792);
   // The default kink rule turns ridge vertices into corners, nothing else; a
   // larger kink angle fewer.
-  const auto k = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types));
+  const auto k =
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), CGAL::parameters::ilsa_crease_contrast(0.));
   const auto k45 = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types),
-                                               CGAL::parameters::ilsa_crease_kink_angle(45.));
+                                               CGAL::parameters::ilsa_crease_kink_angle(45.).ilsa_crease_contrast(0.));
   assert(k.number_of_kink_vertices > k45.number_of_kink_vertices && k45.number_of_kink_vertices > 0);
   assert(k.number_of_ridge_vertices + k.number_of_kink_vertices == 1698);
   assert(k.number_of_corner_vertices == 2792 + k.number_of_kink_vertices);
   // A larger feature angle finds fewer features.
-  const auto s120 =
-      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), CGAL::parameters::ilsa_feature_angle(60.));
+  const auto s120 = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types),
+                                                CGAL::parameters::ilsa_feature_angle(60.).ilsa_crease_contrast(0.));
   assert(s120.number_of_ridge_vertices + s120.number_of_corner_vertices <
          s.number_of_ridge_vertices + s.number_of_corner_vertices);
 }

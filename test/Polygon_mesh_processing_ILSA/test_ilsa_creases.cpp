@@ -305,7 +305,7 @@ void test_two_sided_measure() {
 // The crease contrast (user manual, "Crease contrast"): the creases of a CAD
 // model stay creases (the fandisk keeps its ridge vertices), the curvature of
 // a coarse organic mesh is no longer taken for creases (the elephant's
-// corners drop to less than a third), 0 is the paper's rule, and a negative or
+// corners drop to less than a third), 0 is the paper's rule, 5 the default, and a negative or
 // non-finite contrast is rejected.
 template <class Mesh> void test_crease_contrast() {
   auto types = [](const Mesh& m, double contrast) {
@@ -358,11 +358,16 @@ template <class Mesh> void test_crease_contrast() {
   // The CAD model's crease lines are all kept.
   assert(crease_lines(fandisk, fandisk, 5.).number_of_sharp_edges ==
          crease_lines(fandisk, fandisk, 0.).number_of_sharp_edges);
-  // The default is the paper's rule.
+  // The default is a contrast of 5, in the smoother and in the fidelity summary.
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, PMP::ILSA_vertex_type> map;
   const auto defaults = PMP::classify_vertices_ilsa(elephant, boost::make_assoc_property_map(map));
-  assert(defaults.number_of_corner_vertices == paper_organic.number_of_corner_vertices &&
-         defaults.number_of_ridge_vertices == paper_organic.number_of_ridge_vertices);
+  assert(defaults.number_of_corner_vertices == contrasted_organic.number_of_corner_vertices &&
+         defaults.number_of_ridge_vertices == contrasted_organic.number_of_ridge_vertices);
+  Mesh default_smoothed = elephant;
+  PMP::smooth_surface_mesh_ilsa(default_smoothed);
+  assert(points_of(default_smoothed) == points_of(contrast_smoothed));
+  assert(PMP::mesh_fidelity_ilsa(elephant, contrast_smoothed, CGAL::parameters::ilsa_compute_hausdorff_distance(false))
+             .number_of_sharp_edges == contrast_lines.number_of_sharp_edges);
   for (const double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     Mesh m = elephant;
     bool thrown = false;

@@ -71,7 +71,7 @@ namespace Polygon_mesh_processing {
  * (user manual, "Crease contrast"; not in the paper). `0` makes every such edge between two ridge candidates sharp,
  * the paper's rule. Ignored with an `edge_is_constrained_map`}
  *     \cgalParamType{`double`, non-negative and finite}
- *     \cgalParamDefault{`0`}
+ *     \cgalParamDefault{`5`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_crease_kink_angle}
  *     \cgalParamDescription{a vertex with two sharp edges where the crease turns by more than this angle (degrees) is a

@@ -295,9 +295,10 @@ inline void crease_deviation(const Segments& original_crease, const Segments& sm
 /// - `ilsa_feature_angle` (default `20`): an edge of `original` is sharp when the
 ///   normals of its two faces make a larger angle, in degrees (CGAL's convention,
 ///   as in `detect_sharp_edges()`); the crease deviation compares these edges;
-/// - `ilsa_crease_contrast` (default `0`): with a contrast above 0, only the
-///   sharp edges that keep it, as in `smooth_surface_mesh_ilsa()` (user manual,
-///   "Crease contrast"): pass the smoother's value to measure its crease lines;
+/// - `ilsa_crease_contrast` (default `5`, the smoother's): with a contrast above
+///   0, only the sharp edges that keep it, as in `smooth_surface_mesh_ilsa()`
+///   (user manual, "Crease contrast"); pass the smoother's value to measure its
+///   crease lines, `0` to measure every edge beyond the feature angle;
 /// - `edge_is_constrained_map`: a map from the edges of `original` to `bool`;
 ///   when given, its edges are the crease edges instead of the sharp ones;
 /// - `random_seed` (default 0): the seed of the Hausdorff distance, which

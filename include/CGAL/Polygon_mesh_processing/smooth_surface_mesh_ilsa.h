@@ -169,7 +169,7 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  * sharp nor held by the crease bound of `ilsa_fidelity_tolerance`. `0` makes every such edge between two ridge
  * candidates sharp, the paper's rule. Ignored with an `edge_is_constrained_map`}
  *     \cgalParamType{`double`, non-negative and finite}
- *     \cgalParamDefault{`0`}
+ *     \cgalParamDefault{`5`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_crease_kink_angle}
  *     \cgalParamDescription{a vertex with two sharp (or constrained) edges is fixed like a corner when the crease

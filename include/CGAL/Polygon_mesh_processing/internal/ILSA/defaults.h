@@ -35,7 +35,7 @@ inline constexpr double area_weight = 0.1;  // wa
 // kink angle defaults to the feature angle given.
 inline constexpr double feature_angle = 20.;
 inline constexpr bool fix_unattached_candidates = true;
-inline constexpr double crease_contrast = 0.; // 0: the paper's rule (every feature edge between candidates is sharp)
+inline constexpr double crease_contrast = 5.; // 0: the paper's rule (every feature edge between candidates is sharp)
 inline constexpr bool relax_constraints = false;
 
 // Safety check (user manual, "Safety check"). The quality floor is raised to

@@ -107,22 +107,22 @@ inline void keep_contrasted_creases(const Flat_mesh& m, const Set_up_incidences&
     return found != last && *found == b ? m.vertex_edges.items[m.vertex_edges.begin[a] + std::size_t(found - first)]
                                         : npos;
   };
-  std::vector<double> angle(ne);
-  for (std::size_t e = 0; e < ne; ++e) angle[e] = angle_of(e);
-  // Per face: the angle of the flatter of its two edges other than `e`.
+  // Per face: the angle of the flatter of its two edges other than `e` (the
+  // angles are computed where needed: few edges are feature edges, and an
+  // array of them would add to the peak memory of large meshes).
   auto wing = [&](std::size_t f, std::size_t e) {
     double flatter = std::numeric_limits<double>::infinity();
     const auto& t = m.faces[f];
     for (int k = 0; k < 3; ++k) {
       const Index g = edge_between(t[k], t[(k + 1) % 3]);
-      if (g != npos && g != e) flatter = (std::min)(flatter, angle[g]);
+      if (g != npos && g != e) flatter = (std::min)(flatter, angle_of(g));
     }
     return flatter == std::numeric_limits<double>::infinity() ? 0. : flatter;
   };
   for (std::size_t e = 0; e < ne; ++e) {
     if (!feature_edge[e] && !sharp_edge[e]) continue;
     const auto& fs = incidences.edge_faces[e];
-    if (keeps_crease_contrast(angle[e], wing(fs[0], e), wing(fs[1], e), contrast)) continue;
+    if (keeps_crease_contrast(angle_of(e), wing(fs[0], e), wing(fs[1], e), contrast)) continue;
     feature_edge[e] = 0;
     if (sharp_edge[e]) sharp_edge[e] = 0, curved[m.edges[e][0]] = curved[m.edges[e][1]] = 1;
   }
