@@ -157,9 +157,12 @@ int main() {
   // The default run also replays the cases that once failed (with the mesh
   // list of a checkout beside ../shared: a case's mesh is case % list size).
   // 723: the crease bound sampled fewer points than mesh_fidelity_ilsa().
+  // 544: the crease contrast took an edge of a degenerate face (collapsed
+  // edges) for a bent one in the classification, for a flat one in
+  // mesh_fidelity_ilsa(), so the two kept different crease lines.
   std::vector<int> case_list;
   for (int c = first; c < first + cases; ++c) case_list.push_back(c);
-  if (!env && !first_env) case_list.push_back(723);
+  if (!env && !first_env) case_list.insert(case_list.end(), {544, 723});
   for (int c : case_list) {
     std::mt19937 rng(2026u + unsigned(c));
     const std::size_t which = std::size_t(c) % meshes.size();

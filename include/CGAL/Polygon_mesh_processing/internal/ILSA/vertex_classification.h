@@ -109,13 +109,20 @@ inline void keep_contrasted_creases(const Flat_mesh& m, const Set_up_incidences&
   };
   // Per face: the angle of the flatter of its two edges other than `e` (the
   // angles are computed where needed: few edges are feature edges, and an
-  // array of them would add to the peak memory of large meshes).
+  // array of them would add to the peak memory of large meshes). An edge of a
+  // degenerate face, whose normal is zero, counts as flat there, as in
+  // mesh_fidelity_ilsa(), so that both keep the same crease lines.
+  auto flat_next_to_degenerate = [&](std::size_t g) {
+    const auto& fs = incidences.edge_faces[g];
+    if (fs[0] != npos && fs[1] != npos && (face_normals[fs[0]].isZero(0) || face_normals[fs[1]].isZero(0))) return 0.;
+    return angle_of(g);
+  };
   auto wing = [&](std::size_t f, std::size_t e) {
     double flatter = std::numeric_limits<double>::infinity();
     const auto& t = m.faces[f];
     for (int k = 0; k < 3; ++k) {
       const Index g = edge_between(t[k], t[(k + 1) % 3]);
-      if (g != npos && g != e) flatter = (std::min)(flatter, angle_of(g));
+      if (g != npos && g != e) flatter = (std::min)(flatter, flat_next_to_degenerate(g));
     }
     return flatter == std::numeric_limits<double>::infinity() ? 0. : flatter;
   };
