@@ -225,20 +225,20 @@ inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vect
                                                   const Vertex_pairs& constrained, double feature_angle,
                                                   double contrast) {
   const double sharp_cosine = feature_cosine(feature_angle);
-  // The angle between the face normals of each edge (0 on the border).
-  std::vector<double> angle(num_edges(a), 0.);
+  // The cosine of the angle between the face normals of each edge; 1 (flat)
+  // on the border and next to a degenerate face, whose normal is zero.
+  std::vector<double> cosine(num_edges(a), 1.);
   if (!user_creases)
     for (auto e : edges(a)) {
       const auto h = halfedge(e, a);
       if (is_border_edge(h, a)) continue;
       auto n0 = face_normal(a, face(h, a)), n1 = face_normal(a, face(opposite(h, a), a));
       const double l = std::sqrt(n0.squared_length() * n1.squared_length());
-      angle[std::size_t(e)] = l == 0 ? 0. : normal_angle(n0 * n1 / l);
+      if (l != 0) cosine[std::size_t(e)] = n0 * n1 / l;
     }
+  auto angle = [&](Mesh::Halfedge_index h) { return normal_angle(cosine[std::size_t(edge(h, a))]); };
   // The angle of the flatter of the two edges of the face of `h` other than `h`'s.
-  auto flatter = [&](Mesh::Halfedge_index h) {
-    return (std::min)(angle[std::size_t(edge(next(h, a), a))], angle[std::size_t(edge(prev(h, a), a))]);
-  };
+  auto flatter = [&](Mesh::Halfedge_index h) { return (std::min)(angle(next(h, a)), angle(prev(h, a))); };
   std::pair<Segments, Segments> creases;
   for (auto e : edges(a)) {
     const auto h = halfedge(e, a);
@@ -246,12 +246,8 @@ inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vect
       const std::size_t i = std::size_t(source(h, a)), j = std::size_t(target(h, a));
       if (!constrained.count({(std::min)(i, j), (std::max)(i, j)})) continue;
     } else {
-      if (is_border_edge(h, a)) continue;
-      auto n0 = face_normal(a, face(h, a)), n1 = face_normal(a, face(opposite(h, a), a));
-      const double l = std::sqrt(n0.squared_length() * n1.squared_length());
-      if (l == 0 || n0 * n1 / l >= sharp_cosine) continue;
-      if (contrast > 0 && !keeps_crease_contrast(angle[std::size_t(e)], flatter(h), flatter(opposite(h, a)), contrast))
-        continue;
+      if (!(cosine[std::size_t(e)] < sharp_cosine)) continue;
+      if (contrast > 0 && !keeps_crease_contrast(angle(h), flatter(h), flatter(opposite(h, a)), contrast)) continue;
     }
     creases.first.emplace_back(a.point(source(h, a)), a.point(target(h, a)));
     creases.second.emplace_back(pb[std::size_t(source(h, a))], pb[std::size_t(target(h, a))]);
