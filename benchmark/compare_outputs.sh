@@ -9,7 +9,9 @@
 # OLD_TOOL is e.g. ilsa_smooth built from the commit before the change (a
 # `git worktree` of it), NEW_TOOL the one built from the working tree. Prints
 # one line per difference and a summary; exits 1 if any output differs or a
-# run fails.
+# run fails. NEW_FLAGS, when set, are given to NEW_TOOL only (before each
+# set's, which win): with the flags that restore an earlier default, it checks that the
+# earlier behaviour is still reachable.
 set -uo pipefail
 old=${1:?usage: compare_outputs.sh OLD_TOOL NEW_TOOL [WORK_DIR]}
 new=${2:?usage: compare_outputs.sh OLD_TOOL NEW_TOOL [WORK_DIR]}
@@ -39,7 +41,7 @@ for mesh in "${meshes[@]}"; do
       out="$work/$name-set$s-t$threads"
       # shellcheck disable=SC2086
       if ! "$old" "$mesh" "$out-old.off" --threads $threads ${sets[$s]} > /dev/null 2>&1 ||
-         ! "$new" "$mesh" "$out-new.off" --threads $threads ${sets[$s]} > /dev/null 2>&1; then
+         ! "$new" "$mesh" "$out-new.off" --threads $threads ${NEW_FLAGS:-} ${sets[$s]} > /dev/null 2>&1; then
         echo "failed: $name, set $s (${sets[$s]:-defaults}), $threads thread(s)"
         failed=$((failed + 1))
         continue

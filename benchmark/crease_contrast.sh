@@ -10,6 +10,8 @@
 #   benchmark/crease_contrast.sh TOOL "C1 C2 ..." [MESH_NAME=TOLERANCE ...]
 #
 # e.g. benchmark/crease_contrast.sh build/examples/Polygon_mesh_processing_ILSA/ilsa_smooth "0 5 8" cow=9.3e-3
+# FLAGS, when set, are added to every run of the tool (e.g. FLAGS="--iterations 20
+# --penalty-steps 2 --tangential 0": the iteration defaults before "Fewer, Longer Iterations").
 set -uo pipefail
 tool=${1:?usage: crease_contrast.sh TOOL "CONTRASTS" [MESH_NAME=TOLERANCE ...]}
 contrasts=${2:?usage: crease_contrast.sh TOOL "CONTRASTS" [MESH_NAME=TOLERANCE ...]}
@@ -31,7 +33,8 @@ for mesh in "${meshes[@]}"; do
   [ -n "${seen[$name]:-}" ] && continue
   seen[$name]=1
   tol=${tolerance[$name]:-default}
-  flags=(--threads 2 --report full)
+  # shellcheck disable=SC2206
+  flags=(--threads 2 --report full ${FLAGS:-})
   [ "$tol" = default ] || flags+=(--fidelity-tolerance "$tol")
   row="| $name | $tol |"
   for c in $contrasts; do

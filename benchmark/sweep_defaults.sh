@@ -10,8 +10,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 meshes=("$@")
 [ ${#meshes[@]} -gt 0 ] || meshes=("$here"/../data/meshes/horse.ply "$here"/../data/meshes/fandisk.off "$here"/../data/meshes/elephant.off)
 sweep() { echo "## $1"; shift; env "$@" "$here/sweep_parameters.sh" "$build" "${meshes[@]}"; echo; }
-sweep "number_of_iterations" ITERATIONS="10 20 40"
+sweep "number_of_iterations" ITERATIONS="5 10 20"
 sweep "number_of_relaxation_steps" STEPS="1 2 3 6"
+sweep "ilsa_penalty_steps" PSTEPS="2 4 6 8"
+sweep "ilsa_tangential_displacement" TANGENT="0 1"
 sweep "ilsa_relaxation (relax1)" RELAX1="0.2 0.5 0.8"
 sweep "ilsa_penalty_relaxation (relax2)" RELAX2="0.2 0.5 0.8 1"
 sweep "ilsa_penalty_mu" MU="0.1 1 10"

@@ -60,6 +60,8 @@ struct Options {
   std::string output;
   // The library's defaults (the usage text below states them; test_ilsa_smoothing checks that it does).
   unsigned int iterations = defaults::number_of_iterations, relaxation_steps = defaults::number_of_relaxation_steps;
+  unsigned int penalty_steps = defaults::penalty_steps;
+  bool tangential = defaults::tangential_displacement;
   double relax1 = defaults::relaxation, relax2 = defaults::penalty_relaxation, mu = defaults::penalty_mu;
   double wl = defaults::length_weight, wa = defaults::area_weight, feature_angle = defaults::feature_angle;
   double fidelity_tolerance = defaults::fidelity_tolerance;
@@ -90,15 +92,18 @@ const char* usage =
     ".stl holds 32-bit floats only (about 7 digits): the format's limit.\n"
     "  --help, -h              this text\n"
     "  --version               the package's version\n"
-    "  --iterations N          largest number of global iterations (default 20)\n"
+    "  --iterations N          largest number of global iterations (default 10)\n"
     "  --min-gain X            stop once an iteration raises the mean q by less, >= 0,\n"
     "                          0 disables this stop (default 1e-4)\n"
     "  --min-remaining-gain X  stop once an iteration's gain of mean q times the iterations\n"
     "                          left is below X, >= 0, 0 disables this stop (default 2e-3);\n"
     "                          with both stops disabled every iteration runs\n"
-    "  --relaxation-steps N    sweeps per iteration (default 2)\n"
+    "  --relaxation-steps N    sweeps of the ILSA step per iteration (default 2)\n"
+    "  --penalty-steps N       sweeps of the penalty step per iteration (default 6)\n"
     "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
     "  --relax2 X              penalty relaxation, (0,1] (default 0.8)\n"
+    "  --tangential 0|1        drop the normal component of the displacements,\n"
+    "                          0: keep it (the paper) (default 1)\n"
     "  --mu X                  penalty parameter, > 0 (default 1)\n"
     "  --wl X                  length weight, >= 0 (default 1)\n"
     "  --wa X                  area weight, >= 0 (default 0.1)\n"
@@ -162,6 +167,8 @@ Options parse(int argc, char** argv) {
   std::map<std::string, std::function<void(const std::string&)>> valued{
       {"--iterations", [&](const std::string& s) { o.iterations = parse_count("--iterations", s); }},
       {"--relaxation-steps", [&](const std::string& s) { o.relaxation_steps = parse_count("--relaxation-steps", s); }},
+      {"--penalty-steps", [&](const std::string& s) { o.penalty_steps = parse_count("--penalty-steps", s); }},
+      {"--tangential", [&](const std::string& s) { o.tangential = parse_count("--tangential", s) != 0; }},
       {"--relax1", [&](const std::string& s) { o.relax1 = parse_number("--relax1", s); }},
       {"--relax2", [&](const std::string& s) { o.relax2 = parse_number("--relax2", s); }},
       {"--mu", [&](const std::string& s) { o.mu = parse_number("--mu", s); }},
@@ -258,6 +265,7 @@ std::string in_flag_terms(std::string message) {
       {"ilsa_quality_floor", "--quality-floor"},
       {"ilsa_fidelity_tolerance", "--fidelity-tolerance"},
       {"number_of_relaxation_steps", "--relaxation-steps"},
+      {"ilsa_penalty_steps", "--penalty-steps"},
       {"number_of_iterations", "--iterations"},
   };
   for (const auto& [library, flag] : names)
@@ -324,6 +332,8 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
 auto smoothing_parameters(const Options& o, const std::function<bool(double)>& callback) {
   return CGAL::parameters::number_of_iterations(o.iterations)
       .number_of_relaxation_steps(o.relaxation_steps)
+      .ilsa_penalty_steps(o.penalty_steps)
+      .ilsa_tangential_displacement(o.tangential)
       .ilsa_relaxation(o.relax1)
       .ilsa_penalty_relaxation(o.relax2)
       .ilsa_penalty_mu(o.mu)

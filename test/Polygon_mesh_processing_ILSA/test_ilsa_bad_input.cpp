@@ -244,6 +244,7 @@ template <class Mesh> void test_invalid_parameters() {
   fails(CGAL::parameters::number_of_iterations(-3), "negative iterations");
   fails(CGAL::parameters::number_of_iterations(1000000000), "absurd iterations");
   fails(CGAL::parameters::number_of_relaxation_steps(0), "zero relaxation steps");
+  fails(CGAL::parameters::ilsa_penalty_steps(0), "zero penalty steps");
   fails(CGAL::parameters::ilsa_minimum_quality_gain(-1e-4), "negative minimum gain");
   fails(CGAL::parameters::ilsa_minimum_quality_gain(std::nan("")), "NaN minimum gain");
   fails(CGAL::parameters::ilsa_retry_distance(-1e-3), "negative retry distance");

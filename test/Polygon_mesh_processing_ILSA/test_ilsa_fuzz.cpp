@@ -244,6 +244,13 @@ int main() {
     std::mt19937 contrast_rng(15485863u + unsigned(c));
     const double contrast = unit(contrast_rng) < 0.5 ? 0. : 1. + 9. * unit(contrast_rng);
 
+    // The sweeps of the penalty step (1 to 12) and the tangential
+    // displacement (on in two cases of three, the default), drawn from a
+    // generator of their own.
+    std::mt19937 penalty_rng(32452843u + unsigned(c));
+    const unsigned penalty_steps = 1 + unsigned(unit(penalty_rng) * 12);
+    const bool tangential = unit(penalty_rng) < 2. / 3.;
+
     // A fifth of the cases stop through the callback, after the iteration that
     // reaches `stop_after` (drawn from a generator of its own, so that the
     // other draws of each case stay as they were).
@@ -261,6 +268,8 @@ int main() {
 
     auto np = CGAL::parameters::number_of_iterations(iterations)
                   .number_of_relaxation_steps(steps)
+                  .ilsa_penalty_steps(penalty_steps)
+                  .ilsa_tangential_displacement(tangential)
                   .ilsa_relaxation(relax1)
                   .ilsa_penalty_relaxation(relax2)
                   .ilsa_penalty_mu(mu)
@@ -596,19 +605,19 @@ int main() {
     if (!ok) {
       ++failures;
       std::cout << "case " << c << " (" << files[which] << ", iterations " << iterations << ", steps " << steps
-                << ", relax1 " << relax1 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa
-                << ", angle " << angle << ", fix " << fix << ", floor " << (default_floor ? -1. : floor)
-                << ", monotone " << monotone << ", reject worsening " << reject_worsening << ", kink " << kink
-                << ", crease contrast " << contrast << ", tolerance " << tolerance << ", gain " << gain
-                << ", remaining gain " << remaining_gain << ", retry distance " << retry << ", project " << project
-                << ", safety " << safety << ", range " << use_range << ", vertex map " << use_vertex_map
-                << ", edge map " << use_edge_map << ", relax " << relax << "): flipped " << f.number_of_flipped_faces
-                << ", collapsed edges " << collapsed_edges << ", zero-area input faces opened reversed " << reversed
-                << ", distance " << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite "
-                << non_finite << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
-                << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
-                << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
-                << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
+                << ", penalty steps " << penalty_steps << ", tangential " << tangential << ", relax1 " << relax1
+                << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa << ", angle " << angle
+                << ", fix " << fix << ", floor " << (default_floor ? -1. : floor) << ", monotone " << monotone
+                << ", reject worsening " << reject_worsening << ", kink " << kink << ", crease contrast " << contrast
+                << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain " << remaining_gain
+                << ", retry distance " << retry << ", project " << project << ", safety " << safety << ", range "
+                << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map << ", relax "
+                << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges " << collapsed_edges
+                << ", zero-area input faces opened reversed " << reversed << ", distance " << f.max_vertex_distance
+                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
+                << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
+                << f.max_crease_deviation << ", parallel run identical " << same_in_parallel << ", same faces "
+                << same_faces << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
                 << statistics.number_of_iterations << " iterations run, " << allowed << " allowed"
                 << ", ridge vertex off the creases " << ridge_off_crease << ", one-iteration worsening test "
                 << worsening_ok << ", vertices four edges apart " << isolated_ok << ", convergence stop "

@@ -129,6 +129,72 @@ template <class Mesh> void test_sphere() {
   require(check_invariants(original, m, [](std::size_t, const Point&) { return false; }), "sphere");
 }
 
+// ilsa_tangential_displacement: without the projection and the safety check a
+// smooth vertex moves by its displacement, which by default lies in the plane
+// normal to the area-weighted normal of its faces; with `false` (the paper's)
+// it keeps a normal component, which on a sphere is the curvature's.
+template <class Mesh> void test_tangential_displacement() {
+  Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
+  perturb_on_surface(original, 0.3, 6);
+  const auto types = types_of(original);
+  const std::vector<Point> before = points_of(original);
+  // The unit area-weighted normal of each vertex of `original`, in the order of vertices().
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, std::size_t> index;
+  for (auto v : vertices(original)) index.emplace(v, index.size());
+  std::vector<K::Vector_3> normal(before.size(), CGAL::NULL_VECTOR);
+  const auto face_normal = face_normals_of(original);
+  std::size_t f = 0;
+  for (auto face : faces(original)) {
+    for (auto v : vertices_around_face(halfedge(face, original), original)) normal[index.at(v)] += face_normal[f];
+    ++f;
+  }
+  double mean_edge = 0;
+  for (auto e : edges(original))
+    mean_edge += std::sqrt(CGAL::squared_distance(get(CGAL::vertex_point, original, source(e, original)),
+                                                  get(CGAL::vertex_point, original, target(e, original))));
+  mean_edge /= double(num_edges(original));
+  // The largest normal component of a smooth vertex's move, relative to the mean edge length.
+  auto normal_component = [&](bool tangential) {
+    Mesh m = original;
+    PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::number_of_iterations(1)
+                                         .do_project(false)
+                                         .use_safety_constraints(false)
+                                         .ilsa_tangential_displacement(tangential));
+    const std::vector<Point> after = points_of(m);
+    double largest = 0;
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < after.size(); ++i) {
+      if (types[i] != PMP::ILSA_vertex_type::Smooth) continue;
+      const K::Vector_3 move = after[i] - before[i];
+      moved += move != CGAL::NULL_VECTOR;
+      largest = (std::max)(largest, std::abs(move * normal[i]) / std::sqrt(normal[i].squared_length()) / mean_edge);
+    }
+    assert(moved > after.size() / 2);
+    return largest;
+  };
+  const double tangential = normal_component(true), paper = normal_component(false);
+  std::cout << "tangential displacement: largest normal component of a move " << tangential << " (the paper's " << paper
+            << ") mean edge lengths" << std::endl;
+  assert(tangential <= 1e-12);
+  assert(paper > 1e-3);
+}
+
+// The sweeps of the two steps are two parameters: number_of_relaxation_steps
+// sets those of Algo. 2 only, ilsa_penalty_steps those of Algo. 3.
+void test_sweep_parameters() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  const auto defaults = ilsa::read_smoothing_parameters(CGAL::parameters::default_values());
+  assert(defaults.sweeps == ilsa::defaults::number_of_relaxation_steps);
+  assert(defaults.penalty.sweeps == ilsa::defaults::penalty_steps);
+  assert(defaults.tangential == ilsa::defaults::tangential_displacement);
+  const auto ilsa_only = ilsa::read_smoothing_parameters(CGAL::parameters::number_of_relaxation_steps(3));
+  assert(ilsa_only.sweeps == 3 && ilsa_only.penalty.sweeps == ilsa::defaults::penalty_steps);
+  const auto both = ilsa::read_smoothing_parameters(
+      CGAL::parameters::ilsa_penalty_steps(7).number_of_relaxation_steps(3).ilsa_tangential_displacement(false));
+  assert(both.sweeps == 3 && both.penalty.sweeps == 7 && !both.tangential);
+  std::cout << "sweep parameters: read apart" << std::endl;
+}
+
 // Same input as Surface_mesh and Polyhedron_3: same coordinates.
 void test_mesh_types_agree() {
   Surface_mesh sm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
@@ -953,7 +1019,7 @@ template <class Mesh> void test_retry_distance() {
 // the run while the gain is still above the first's threshold.
 template <class Mesh>
 void test_convergence_stop(const std::string& file, double remaining_gain, bool remaining_decides) {
-  const double minimum_gain = 1e-4, cap = 20;
+  const double minimum_gain = 1e-4, cap = PMP::internal::ILSA::defaults::number_of_iterations;
   Mesh original = read_mesh<Mesh>(data_file(file));
   Mesh m = original;
   const auto s = PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_minimum_remaining_gain(remaining_gain));
@@ -1051,6 +1117,8 @@ void test_documented_defaults() {
                                               {"ilsa_minimum_quality_gain", defaults::minimum_quality_gain},
                                               {"ilsa_minimum_remaining_gain", defaults::minimum_remaining_gain},
                                               {"number_of_relaxation_steps", defaults::number_of_relaxation_steps},
+                                              {"ilsa_penalty_steps", defaults::penalty_steps},
+                                              {"ilsa_tangential_displacement", defaults::tangential_displacement},
                                               {"ilsa_relaxation", defaults::relaxation},
                                               {"ilsa_penalty_relaxation", defaults::penalty_relaxation},
                                               {"ilsa_penalty_mu", defaults::penalty_mu},
@@ -1133,6 +1201,8 @@ void test_documented_defaults() {
                                                       {"--min-gain", "ilsa_minimum_quality_gain"},
                                                       {"--min-remaining-gain", "ilsa_minimum_remaining_gain"},
                                                       {"--relaxation-steps", "number_of_relaxation_steps"},
+                                                      {"--penalty-steps", "ilsa_penalty_steps"},
+                                                      {"--tangential", "ilsa_tangential_displacement"},
                                                       {"--relax1", "ilsa_relaxation"},
                                                       {"--relax2", "ilsa_penalty_relaxation"},
                                                       {"--mu", "ilsa_penalty_mu"},
@@ -1158,7 +1228,7 @@ void test_documented_defaults() {
   std::cout << "documented defaults: " << checked << " statements agree with internal/ILSA/defaults.h (reference "
             << smoother << " + " << classification << " + " << quality << ", manual " << manual << ", tool " << tool
             << ")" << std::endl;
-  assert(smoother >= 15 && classification >= 3 && quality >= 2 && manual >= 13 && tool == 15);
+  assert(smoother >= 17 && classification >= 3 && quality >= 2 && manual >= 15 && tool == 17);
 }
 
 int main() {
@@ -1193,6 +1263,9 @@ int main() {
   test_fandisk<Polyhedron>();
   test_sphere<Surface_mesh>();
   test_sphere<Polyhedron>();
+  test_sweep_parameters();
+  test_tangential_displacement<Surface_mesh>();
+  test_tangential_displacement<Polyhedron>();
   test_mesh_types_agree();
   test_vertex_order();
   test_locality_order();

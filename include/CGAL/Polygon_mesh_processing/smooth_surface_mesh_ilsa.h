@@ -105,7 +105,7 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *     \cgalParamDescription{the largest number of global iterations (the paper's max_global_iter_num); see
  * `ilsa_minimum_quality_gain` and `ilsa_minimum_remaining_gain` for the stops before it}
  *     \cgalParamType{unsigned int, at most 100000}
- *     \cgalParamDefault{`20`}
+ *     \cgalParamDefault{`10`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_minimum_quality_gain}
  *     \cgalParamDescription{the run stops before `number_of_iterations` once an iteration raises the mean aspect
@@ -123,11 +123,26 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *     \cgalParamDefault{`2e-3`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{number_of_relaxation_steps}
- *     \cgalParamDescription{the number of sweeps of the ILSA and of the penalty step in each iteration
- * (max_smooth_iter_num); the sweeps stop early once no displacement changes by more than 1e-4 of the mean edge length.
- * The default goes with the default of `ilsa_penalty_relaxation` (user manual, "Sweeps per Iteration")}
+ *     \cgalParamDescription{the number of sweeps of the ILSA step (Algo. 2) in each iteration
+ * (max_smooth_iter_num); the sweeps stop early once no displacement changes by more than 1e-4 of the mean edge length
+ * (user manual, "Sweeps per Iteration")}
  *     \cgalParamType{unsigned int, 1 to 10000}
  *     \cgalParamDefault{`2`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_penalty_steps}
+ *     \cgalParamDescription{the number of sweeps of the penalty step (Algo. 3) in each iteration, with the same early
+ * stop; the paper uses max_smooth_iter_num for both steps (`ilsa_penalty_steps(2)` with the default
+ * `number_of_relaxation_steps`). The default goes with the defaults of `ilsa_penalty_relaxation`,
+ * `ilsa_tangential_displacement` and `number_of_iterations` (user manual, "Fewer, Longer Iterations")}
+ *     \cgalParamType{unsigned int, 1 to 10000}
+ *     \cgalParamDefault{`6`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_tangential_displacement}
+ *     \cgalParamDescription{if `true`, the displacement of a smooth vertex loses its component along the vertex normal
+ * (the area-weighted normal of its faces) before it is projected onto the input; `false` moves it as the paper does,
+ * normal component included (user manual, "Fewer, Longer Iterations")}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_relaxation}
  *     \cgalParamDescription{the ILSA relaxation factor relax1 (share of the neighbours' weighted mean displacement

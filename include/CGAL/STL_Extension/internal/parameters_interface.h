@@ -29,6 +29,8 @@
 // clang-format off
 CGAL_add_named_parameter(ilsa_relaxation_t, ilsa_relaxation, ilsa_relaxation)
 CGAL_add_named_parameter(ilsa_penalty_relaxation_t, ilsa_penalty_relaxation, ilsa_penalty_relaxation)
+CGAL_add_named_parameter(ilsa_penalty_steps_t, ilsa_penalty_steps, ilsa_penalty_steps)
+CGAL_add_named_parameter(ilsa_tangential_displacement_t, ilsa_tangential_displacement, ilsa_tangential_displacement)
 CGAL_add_named_parameter(ilsa_penalty_mu_t, ilsa_penalty_mu, ilsa_penalty_mu)
 CGAL_add_named_parameter(ilsa_length_weight_t, ilsa_length_weight, ilsa_length_weight)
 CGAL_add_named_parameter(ilsa_area_weight_t, ilsa_area_weight, ilsa_area_weight)

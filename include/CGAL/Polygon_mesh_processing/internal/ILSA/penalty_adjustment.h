@@ -33,7 +33,7 @@ struct Penalty_parameters {
   double mu = defaults::penalty_mu;
   double length_weight = defaults::length_weight; // wl
   double area_weight = defaults::area_weight;     // wa
-  std::size_t sweeps = defaults::number_of_relaxation_steps;
+  std::size_t sweeps = defaults::penalty_steps;
   double tolerance = 0; // stop once no displacement changes by more
 };
 
@@ -164,6 +164,25 @@ std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector
           at = pos[w] + d[w];
         });
       });
+}
+
+/// Removes from `d[v]`, for each vertex `v` of `vertices`, its component along
+/// the area-weighted normal of its faces at `pos` (user manual, "Fewer, Longer
+/// Iterations"): the move stays in the tangent plane, and the projection onto
+/// the input only corrects the curvature. A vertex whose faces have no area
+/// keeps its displacement.
+template <class ConcurrencyTag>
+void remove_normal_components(const Flat_mesh& m, const std::vector<Vec3>& pos, const std::vector<Index>& vertices,
+                              std::vector<Vec3>& d) {
+  parallel_for<ConcurrencyTag>(vertices.size(), [&](std::size_t i) {
+    const std::size_t v = vertices[i];
+    Vec3 n = Vec3::Zero();
+    for (const Index* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) n += area_vector(pos, m.faces[*f]);
+    const double length = n.norm();
+    if (!(length > 0) || !std::isfinite(length)) return;
+    n /= length;
+    d[v] -= d[v].dot(n) * n;
+  });
 }
 
 } // namespace ILSA

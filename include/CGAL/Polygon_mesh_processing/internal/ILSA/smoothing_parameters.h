@@ -26,9 +26,11 @@ namespace internal {
 namespace ILSA {
 
 struct Smoothing_parameters {
-  std::size_t iterations = defaults::number_of_iterations; // the paper's max_global_iter_num
+  std::size_t iterations = defaults::number_of_iterations;   // the paper's max_global_iter_num
+  std::size_t sweeps = defaults::number_of_relaxation_steps; // of the ILSA step (Algo. 2)
   double relax1 = defaults::relaxation;
-  Penalty_parameters penalty; // relax2, μ, wl, wa, and the sweeps of both the ILSA and the penalty step
+  Penalty_parameters penalty; // relax2, μ, wl, wa and the sweeps of the penalty step (Algo. 3)
+  bool tangential = defaults::tangential_displacement;
   bool do_project = defaults::do_project;
   bool use_safety = defaults::use_safety_constraints;
   // The quality floor; without an explicit one, raised to the input's
@@ -57,6 +59,10 @@ template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(
       choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::number_of_iterations);
   const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps),
                                        defaults::number_of_relaxation_steps);
+  const auto penalty_sweeps =
+      choose_parameter(get_parameter(np, internal_np::ilsa_penalty_steps), defaults::penalty_steps);
+  p.tangential =
+      choose_parameter(get_parameter(np, internal_np::ilsa_tangential_displacement), defaults::tangential_displacement);
   p.relax1 = choose_parameter(get_parameter(np, internal_np::ilsa_relaxation), defaults::relaxation);
   Penalty_parameters& penalty = p.penalty;
   penalty.relax2 =
@@ -97,6 +103,7 @@ template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(
           "ilsa_retry_distance must be non-negative and finite (0 retries every dropped move at once)");
   require(double(iterations) >= 0 && double(iterations) <= 100000, "number_of_iterations must be in [0, 100000]");
   require(double(sweeps) >= 1 && double(sweeps) <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
+  require(double(penalty_sweeps) >= 1 && double(penalty_sweeps) <= 10000, "ilsa_penalty_steps must be in [1, 10000]");
   require(p.relax1 > 0 && p.relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
   require(penalty.relax2 > 0 && penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]");
   require(penalty.mu > 0 && std::isfinite(penalty.mu), "ilsa_penalty_mu must be positive and finite");
@@ -105,7 +112,8 @@ template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(
   require(penalty.area_weight >= 0 && std::isfinite(penalty.area_weight),
           "ilsa_area_weight must be non-negative and finite");
   p.iterations = std::size_t(iterations);
-  penalty.sweeps = std::size_t(sweeps);
+  p.sweeps = std::size_t(sweeps);
+  penalty.sweeps = std::size_t(penalty_sweeps);
   return p;
 }
 
