@@ -10,7 +10,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 meshes=("$@")
 [ ${#meshes[@]} -gt 0 ] || meshes=("$here"/../data/meshes/horse.ply "$here"/../data/meshes/fandisk.off "$here"/../data/meshes/elephant.off)
 sweep() { echo "## $1"; shift; env "$@" "$here/sweep_parameters.sh" "$build" "${meshes[@]}"; echo; }
-sweep "number_of_iterations" ITERATIONS="5 10 20"
+sweep "number_of_iterations" ITERATIONS="5 8 10 20"
 sweep "number_of_relaxation_steps" STEPS="1 2 3 6"
 sweep "ilsa_penalty_steps" PSTEPS="2 4 6 8"
 sweep "ilsa_tangential_displacement" TANGENT="0 1"

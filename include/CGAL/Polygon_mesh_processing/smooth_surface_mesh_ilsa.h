@@ -105,7 +105,7 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *     \cgalParamDescription{the largest number of global iterations (the paper's max_global_iter_num); see
  * `ilsa_minimum_quality_gain` and `ilsa_minimum_remaining_gain` for the stops before it}
  *     \cgalParamType{unsigned int, at most 100000}
- *     \cgalParamDefault{`10`}
+ *     \cgalParamDefault{`8`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_minimum_quality_gain}
  *     \cgalParamDescription{the run stops before `number_of_iterations` once an iteration raises the mean aspect
@@ -135,7 +135,7 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  * `number_of_relaxation_steps`). The default goes with the defaults of `ilsa_penalty_relaxation`,
  * `ilsa_tangential_displacement` and `number_of_iterations` (user manual, "Fewer, Longer Iterations")}
  *     \cgalParamType{unsigned int, 1 to 10000}
- *     \cgalParamDefault{`6`}
+ *     \cgalParamDefault{`8`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_tangential_displacement}
  *     \cgalParamDescription{if `true`, the displacement of a smooth vertex loses its component along the vertex normal
