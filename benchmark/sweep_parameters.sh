@@ -17,9 +17,9 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 meshes=("$@")
 [ ${#meshes[@]} -gt 0 ] || meshes=("$here"/data/meshes/*.off "$here"/data/meshes/*.ply)
 
-ITERATIONS=${ITERATIONS:-"default"} # number_of_iterations: "default": the library's (10; 20 before "Fewer, Longer Iterations")
+ITERATIONS=${ITERATIONS:-"default"} # number_of_iterations: "default": the library's (8; 20 before "Fewer, Longer Iterations")
 STEPS=${STEPS:-"2"}
-PSTEPS=${PSTEPS:-"default"} # ilsa_penalty_steps: "default": the library's (6); "steps": as many as STEPS (the paper)
+PSTEPS=${PSTEPS:-"default"} # ilsa_penalty_steps: "default": the library's (8); "steps": as many as STEPS (the paper)
 TANGENT=${TANGENT:-"1"} # ilsa_tangential_displacement: 1 (the default) or 0 (the paper's)
 RELAX1=${RELAX1:-"0.5"}
 RELAX2=${RELAX2:-"0.8"}
