@@ -5,6 +5,7 @@
 //   ilsa_benchmark --scaling N
 //   ilsa_benchmark --pareto [--peer-iterations N] [MESH ...]
 //   ilsa_benchmark --phases [--runs N] [--peer-iterations N] [MESH ...]
+//   ilsa_benchmark --crease-sets [MESH ...]
 //
 // Without meshes: every bundled mesh, plus ../shared/data when it exists.
 // Prints one Markdown table row per (mesh, method): quality (aspect ratio q
@@ -22,10 +23,13 @@
 // "What Limits the Smoothing"): CGAL tangential relaxation (unconstrained,
 // N iterations) and its Hausdorff distance H to the input; then ILSA with its
 // defaults but the fidelity tolerance set to H, and the same with the paper's
-// crease rule (crease contrast 0); mean q, Hausdorff distance and its ratio to
+// classification (no crease contrast, no open-crease rule, candidates without
+// a sharp edge fixed); mean q, Hausdorff distance and its ratio to
 // H, flipped faces.
 // Also ILSA with every default: its Hausdorff distance over the default
 // fidelity tolerance. One run each (no time measured).
+// --crease-sets prints instead the connected sets of feature edges of each
+// mesh and what the open-crease rule drops (see run_crease_sets()).
 // --phases prints instead where ILSA's time goes, one thread, median of N
 // runs: the time to the end of the first iteration (the callback's first
 // call), the median time between two later calls (one iteration with its
@@ -247,8 +251,8 @@ bool read_input(const std::string& file, Mesh& input) {
 void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations) {
   const double default_tolerance = PMP::internal::ILSA::defaults::fidelity_tolerance;
   std::cout << "| mesh | tangential relaxation: q / H / flipped | ILSA, tolerance H: q / H (/ peer's H) / flipped | "
-               "ILSA, tolerance H, paper's crease rule (contrast 0): q / H (/ peer's H) / flipped | ILSA q - peer q "
-               "(contrast 0) | ILSA defaults: H / tolerance |\n|---|---|---|---|---|---|\n";
+               "ILSA, tolerance H, paper's classification: q / H (/ peer's H) / flipped | ILSA q - peer q "
+               "(paper's classification) | ILSA defaults: H / tolerance |\n|---|---|---|---|---|---|\n";
   for (const std::string& file : files) {
     Mesh input;
     if (!read_input(file, input)) continue;
@@ -263,13 +267,20 @@ void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations)
     Mesh peer = input;
     PMP::tangential_relaxation(peer, CGAL::parameters::number_of_iterations(peer_iterations));
     const Result p = measure(peer);
-    auto ilsa = [&](double contrast) {
+    // The defaults, or the paper's classification: every feature edge between
+    // candidates sharp (no crease contrast, no open-crease rule), candidates
+    // without a sharp edge fixed.
+    auto ilsa = [&](bool paper) {
+      namespace defaults = PMP::internal::ILSA::defaults;
       Mesh m = input;
       PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(
-          m, CGAL::parameters::ilsa_fidelity_tolerance(p.h).ilsa_crease_contrast(contrast));
+          m, CGAL::parameters::ilsa_fidelity_tolerance(p.h)
+                 .ilsa_crease_contrast(paper ? 0. : defaults::crease_contrast)
+                 .ilsa_minimum_open_crease_edges(paper ? 0u : defaults::minimum_open_crease_edges)
+                 .ilsa_fix_unattached_candidates(paper || defaults::fix_unattached_candidates));
       return measure(m);
     };
-    const Result a = ilsa(PMP::internal::ILSA::defaults::crease_contrast), b = ilsa(0.);
+    const Result a = ilsa(false), b = ilsa(true);
     Mesh defaults = input;
     PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(defaults);
     const Result d = measure(defaults);
@@ -323,12 +334,76 @@ void run_phases(const std::vector<std::string>& files, int runs, unsigned peer_i
   }
 }
 
+// The --crease-sets table (user manual, "Open Crease Lines"): the connected
+// sets of feature edges (beyond the feature angle, kept by the default crease
+// contrast) of each mesh before the open-crease rule, by the package's
+// classification code: how many, their sizes, how many have a loose end (a
+// vertex with one of their edges, not on the border), and how many sets and
+// edges the default rule drops; then the vertex types with the paper's rule
+// (0) and with the default (20), candidates without sharp edge fixed in both.
+void run_crease_sets(const std::vector<std::string>& files) {
+  namespace ilsa = PMP::internal::ILSA;
+  std::cout << "| mesh | feature edges | sets | edges in the largest sets | sets with a loose end | "
+               "sets (edges) dropped, fewer than "
+            << ilsa::defaults::minimum_open_crease_edges
+            << " edges and a loose end | ridge / corner vertices, rule off | ridge / corner vertices, default "
+               "|\n|---|---|---|---|---|---|---|---|\n";
+  for (const std::string& file : files) {
+    Mesh input;
+    if (!read_input(file, input)) continue;
+    ilsa::Set_up_incidences incidences;
+    const auto np = CGAL::parameters::ilsa_minimum_open_crease_edges(0).ilsa_fix_unattached_candidates(true);
+    const auto flat = ilsa::classified_flat_copy(input, get(CGAL::vertex_point, input), np, incidences);
+    const ilsa::Flat_mesh& m = flat.mesh;
+    const std::vector<unsigned char>& feature = flat.classification.feature_edge;
+    // Sets by union-find over the vertices, as drop_short_open_lines() forms them.
+    std::vector<std::size_t> parent(m.number_of_vertices()), degree(m.number_of_vertices(), 0);
+    for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = v;
+    auto find = [&parent](std::size_t v) {
+      while (parent[v] != v) v = parent[v] = parent[parent[v]];
+      return v;
+    };
+    std::size_t features = 0;
+    for (std::size_t e = 0; e < m.edges.size(); ++e)
+      if (feature[e]) {
+        ++features, ++degree[m.edges[e][0]], ++degree[m.edges[e][1]];
+        parent[find(m.edges[e][0])] = find(m.edges[e][1]);
+      }
+    std::map<std::size_t, std::size_t> size;
+    std::map<std::size_t, bool> loose;
+    for (std::size_t e = 0; e < m.edges.size(); ++e)
+      if (feature[e]) ++size[find(m.edges[e][0])];
+    for (std::size_t v = 0; v < degree.size(); ++v)
+      if (degree[v] == 1 && !incidences.on_border[v]) loose[find(v)] = true;
+    std::vector<std::size_t> sizes;
+    std::size_t open = 0, dropped = 0, dropped_edges = 0;
+    for (const auto& [set, n] : size) {
+      sizes.push_back(n);
+      open += loose[set];
+      if (loose[set] && n < ilsa::defaults::minimum_open_crease_edges) ++dropped, dropped_edges += n;
+    }
+    std::sort(sizes.rbegin(), sizes.rend());
+    std::string largest;
+    for (std::size_t i = 0; i < sizes.size() && i < 5; ++i) largest += (i ? ", " : "") + std::to_string(sizes[i]);
+    std::map<Mesh::Vertex_index, PMP::ILSA_vertex_type> types;
+    const auto off = PMP::classify_vertices_ilsa(input, boost::make_assoc_property_map(types), np);
+    const auto on =
+        PMP::classify_vertices_ilsa(input, boost::make_assoc_property_map(types),
+                                    CGAL::parameters::ilsa_fix_unattached_candidates(true)); // the rule's default
+    std::printf("| %s | %zu | %zu | %s | %zu | %zu (%zu) | %zu / %zu | %zu / %zu |\n",
+                std::filesystem::path(file).filename().string().c_str(), features, sizes.size(),
+                largest.empty() ? "-" : largest.c_str(), open, dropped, dropped_edges, off.number_of_ridge_vertices,
+                off.number_of_corner_vertices, on.number_of_ridge_vertices, on.number_of_corner_vertices);
+    std::fflush(stdout);
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--child") return run_child(argv[2], argv[3]);
   int runs = 5;
   unsigned peer_iterations = 10;
   int scaling = -1; // --scaling N: the scaling table up to N subdivisions, and nothing else
-  bool pareto = false, phases = false;
+  bool pareto = false, phases = false, crease_sets = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -340,6 +415,8 @@ int main(int argc, char** argv) {
       pareto = true;
     else if (a == "--phases")
       phases = true;
+    else if (a == "--crease-sets")
+      crease_sets = true;
     else if (a == "--peer-iterations" && i + 1 < argc)
       peer_iterations = unsigned(std::max(1, std::atoi(argv[++i])));
     else
@@ -356,6 +433,10 @@ int main(int argc, char** argv) {
   }
   if (phases) {
     run_phases(files, runs, peer_iterations);
+    return 0;
+  }
+  if (crease_sets) {
+    run_crease_sets(files);
     return 0;
   }
 

@@ -69,6 +69,7 @@ struct Options {
   double minimum_remaining_gain = defaults::minimum_remaining_gain;
   double retry_distance = defaults::retry_distance;
   double crease_contrast = defaults::crease_contrast;
+  unsigned int minimum_open_crease_edges = defaults::minimum_open_crease_edges;
   std::optional<double> kink_angle;    // the library's default (the feature angle) when not given
   std::optional<double> quality_floor; // the library's default when not given
   bool fix_unattached = defaults::fix_unattached_candidates, project = defaults::do_project;
@@ -108,9 +109,12 @@ const char* usage =
     "  --wl X                  length weight, >= 0 (default 1)\n"
     "  --wa X                  area weight, >= 0 (default 0.1)\n"
     "  --feature-angle DEG     an edge is sharp when its face normals differ by more, [0,180) (default 20)\n"
-    "  --fix-unattached 0|1    fix ridge candidates without sharp edge (default 1)\n"
+    "  --fix-unattached 0|1    fix ridge candidates without sharp edge, 1: the paper (default 0)\n"
     "  --crease-contrast X     a sharp edge must bend X times more than the flatter other edge\n"
     "                          of each of its faces, >= 0, 0: every one (the paper) (default 5)\n"
+    "  --min-open-crease-edges N\n"
+    "                          connected sharp edges with an end and fewer edges are curvature,\n"
+    "                          not a crease line, 0: none (the paper) (default 20)\n"
     "  --kink-angle DEG        fix a crease vertex where the crease turns by more, [0,180],\n"
     "                          180 disables (default: the feature angle)\n"
     "  --no-project            do not project back onto the input surface\n"
@@ -181,6 +185,8 @@ Options parse(int argc, char** argv) {
       {"--retry-distance", [&](const std::string& s) { o.retry_distance = parse_number("--retry-distance", s); }},
       {"--kink-angle", [&](const std::string& s) { o.kink_angle = parse_number("--kink-angle", s); }},
       {"--crease-contrast", [&](const std::string& s) { o.crease_contrast = parse_number("--crease-contrast", s); }},
+      {"--min-open-crease-edges",
+       [&](const std::string& s) { o.minimum_open_crease_edges = parse_count("--min-open-crease-edges", s); }},
       {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
       {"--fidelity-tolerance",
        [&](const std::string& s) { o.fidelity_tolerance = parse_number("--fidelity-tolerance", s); }},
@@ -259,6 +265,7 @@ std::string in_flag_terms(std::string message) {
       {"ilsa_feature_angle", "--feature-angle"},
       {"ilsa_crease_kink_angle", "--kink-angle"},
       {"ilsa_crease_contrast", "--crease-contrast"},
+      {"ilsa_minimum_open_crease_edges", "--min-open-crease-edges"},
       {"ilsa_minimum_quality_gain", "--min-gain"},
       {"ilsa_minimum_remaining_gain", "--min-remaining-gain"},
       {"ilsa_retry_distance", "--retry-distance"},
@@ -299,7 +306,8 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
                               CGAL::parameters::ilsa_feature_angle(o.feature_angle)
                                   .ilsa_fix_unattached_candidates(o.fix_unattached)
                                   .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
-                                  .ilsa_crease_contrast(o.crease_contrast));
+                                  .ilsa_crease_contrast(o.crease_contrast)
+                                  .ilsa_minimum_open_crease_edges(o.minimum_open_crease_edges));
   auto aspect_ratio = [](const Mesh& m, Mesh::Face_index f) {
     const auto h = halfedge(f, m);
     return PMP::triangle_quality_ilsa(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
@@ -343,6 +351,7 @@ auto smoothing_parameters(const Options& o, const std::function<bool(double)>& c
       .ilsa_fix_unattached_candidates(o.fix_unattached)
       .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
       .ilsa_crease_contrast(o.crease_contrast)
+      .ilsa_minimum_open_crease_edges(o.minimum_open_crease_edges)
       .ilsa_minimum_quality_gain(o.minimum_gain)
       .ilsa_minimum_remaining_gain(o.minimum_remaining_gain)
       .ilsa_retry_distance(o.retry_distance)
@@ -438,10 +447,12 @@ int run(const Options& o) {
             << (o.threads == 1 || !tbb_available ? std::string("sequential") : std::to_string(o.threads) + " threads")
             << ")\n";
   const bool full = o.report == "full" || (o.report == "auto" && num_faces(mesh) <= Options::full_report_faces);
-  const PMP::ILSA_fidelity_summary f = PMP::mesh_fidelity_ilsa(original, mesh,
-                                                               CGAL::parameters::ilsa_feature_angle(o.feature_angle)
-                                                                   .ilsa_crease_contrast(o.crease_contrast)
-                                                                   .ilsa_compute_hausdorff_distance(full));
+  const PMP::ILSA_fidelity_summary f =
+      PMP::mesh_fidelity_ilsa(original, mesh,
+                              CGAL::parameters::ilsa_feature_angle(o.feature_angle)
+                                  .ilsa_crease_contrast(o.crease_contrast)
+                                  .ilsa_minimum_open_crease_edges(o.minimum_open_crease_edges)
+                                  .ilsa_compute_hausdorff_distance(full));
   std::cout << std::scientific << std::setprecision(2) << "fidelity: " << f.number_of_flipped_faces
             << " flipped faces, vertex distance to input max " << f.max_vertex_distance << " mean "
             << f.mean_vertex_distance << ", ";
@@ -453,12 +464,14 @@ int run(const Options& o) {
             << f.max_crease_deviation << " mean " << f.mean_crease_deviation;
   if (f.closed) std::cout << ", volume change " << f.volume_change;
   std::cout << " [distances relative to the bounding-box diagonal]\n";
-  if (o.report == "full" && o.crease_contrast > 0) {
-    // The same along every edge beyond the feature angle, the curvature the
-    // contrast does not take for creases included (user manual, "Crease contrast").
+  if (o.report == "full" && (o.crease_contrast > 0 || o.minimum_open_crease_edges > 1)) {
+    // The same along every edge beyond the feature angle, the curvature that
+    // the contrast and the open-crease rule do not take for creases included
+    // (user manual, "Crease contrast" and "Open Crease Lines").
     const auto all = PMP::mesh_fidelity_ilsa(original, mesh,
                                              CGAL::parameters::ilsa_feature_angle(o.feature_angle)
                                                  .ilsa_crease_contrast(0.)
+                                                 .ilsa_minimum_open_crease_edges(0)
                                                  .ilsa_compute_hausdorff_distance(false));
     std::cout << "feature lines without the contrast: deviation (" << all.number_of_sharp_edges
               << " edges beyond the feature angle, both ways) max " << all.max_crease_deviation << " mean "
@@ -486,7 +499,8 @@ int run(const Options& o) {
                                 CGAL::parameters::ilsa_feature_angle(o.feature_angle)
                                     .ilsa_fix_unattached_candidates(o.fix_unattached)
                                     .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
-                                    .ilsa_crease_contrast(o.crease_contrast));
+                                    .ilsa_crease_contrast(o.crease_contrast)
+                                    .ilsa_minimum_open_crease_edges(o.minimum_open_crease_edges));
     auto colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
     for (auto v : vertices(mesh)) {
       const PMP::ILSA_vertex_type t = types[v];

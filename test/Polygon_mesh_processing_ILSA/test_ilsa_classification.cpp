@@ -55,10 +55,11 @@ template <class Mesh> void test_fandisk() {
   const Mesh m = read_mesh<Mesh>(data_file("fandisk.off"));
   std::map<std::string, std::size_t> counts;
   const auto types = types_of(m, &counts);
-  // The paper's rule gives 823 ridge and 38 corner vertices; one ridge vertex
-  // is a crease kink by default (checked below).
+  // The paper's rule gives 823 ridge and 38 corner vertices; by default one
+  // ridge vertex is a crease kink and the 2 candidates without a sharp edge
+  // are smooth (both checked below).
   assert(counts["ridge"] == 823 - 1);
-  assert(counts["corner"] == 38 + 1);
+  assert(counts["corner"] == 38 + 1 - 2);
   assert(counts["boundary"] == 0);
 
   using ed = typename boost::graph_traits<Mesh>::edge_descriptor;
@@ -75,10 +76,12 @@ template <class Mesh> void test_fandisk() {
   // Candidates without a sharp edge: with the paper's rule fandisk has 2 of
   // them; smoothing them turns exactly those into smooth vertices.
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Type> relaxed;
-  const auto paper = // the paper's four-type rule: no crease contrast, no kinks
-      CGAL::parameters::ilsa_crease_kink_angle(180.).ilsa_crease_contrast(0.);
+  // The paper's four-type rule: no crease contrast, no open-crease rule, no kinks.
+  const auto paper_but_unattached =
+      CGAL::parameters::ilsa_crease_kink_angle(180.).ilsa_crease_contrast(0.).ilsa_minimum_open_crease_edges(0);
+  const auto paper = paper_but_unattached.ilsa_fix_unattached_candidates(true);
   const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(relaxed),
-                                             paper.ilsa_fix_unattached_candidates(false));
+                                             paper_but_unattached.ilsa_fix_unattached_candidates(false));
   assert(s.number_of_corner_vertices == 36);
   assert(s.number_of_ridge_vertices == 823);
   assert(s.number_of_kink_vertices == 0);
@@ -86,7 +89,8 @@ template <class Mesh> void test_fandisk() {
   // Kinks (user manual): one ridge vertex of the paper's rule, where the crease
   // folds back (its two sharp edges meet at about 19 degrees), becomes a corner.
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Type> with_kinks;
-  const auto k = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(with_kinks));
+  const auto k = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(with_kinks),
+                                             CGAL::parameters::ilsa_fix_unattached_candidates(true));
   const auto p = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(relaxed), paper);
   assert(k.number_of_kink_vertices == 1);
   assert(k.number_of_ridge_vertices == p.number_of_ridge_vertices - 1);
@@ -109,23 +113,25 @@ template <class Mesh> void test_fandisk() {
 void test_horse_counts() {
   const Surface_mesh m = read_mesh<Surface_mesh>(data_file("horse.ply"));
   std::map<Surface_mesh::Vertex_index, Type> types;
-  const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types),
-                                             CGAL::parameters::ilsa_crease_kink_angle(180.).ilsa_crease_contrast(0.));
+  // The paper's classification but for the kink angle.
+  const auto paper =
+      CGAL::parameters::ilsa_crease_contrast(0.).ilsa_minimum_open_crease_edges(0).ilsa_fix_unattached_candidates(true);
+  const auto s =
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), paper.ilsa_crease_kink_angle(180.));
   assert(s.number_of_ridge_vertices == 1698);
   assert(s.number_of_corner_vertices == 2792);
   assert(s.number_of_smooth_vertices == 48485 - 1698 - 2792);
   // The default kink rule turns ridge vertices into corners, nothing else; a
   // larger kink angle fewer.
-  const auto k =
-      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), CGAL::parameters::ilsa_crease_contrast(0.));
-  const auto k45 = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types),
-                                               CGAL::parameters::ilsa_crease_kink_angle(45.).ilsa_crease_contrast(0.));
+  const auto k = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), paper);
+  const auto k45 =
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), paper.ilsa_crease_kink_angle(45.));
   assert(k.number_of_kink_vertices > k45.number_of_kink_vertices && k45.number_of_kink_vertices > 0);
   assert(k.number_of_ridge_vertices + k.number_of_kink_vertices == 1698);
   assert(k.number_of_corner_vertices == 2792 + k.number_of_kink_vertices);
   // A larger feature angle finds fewer features.
-  const auto s120 = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types),
-                                                CGAL::parameters::ilsa_feature_angle(60.).ilsa_crease_contrast(0.));
+  const auto s120 =
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), paper.ilsa_feature_angle(60.));
   assert(s120.number_of_ridge_vertices + s120.number_of_corner_vertices <
          s.number_of_ridge_vertices + s.number_of_corner_vertices);
 }

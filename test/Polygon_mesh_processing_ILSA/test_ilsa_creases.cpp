@@ -302,16 +302,22 @@ void test_two_sided_measure() {
   assert(PMP::mesh_fidelity_ilsa(original, original, np).max_crease_deviation <= 1e-15); // rounding only
 }
 
+// The classification's other rules as in the paper (no open-crease rule,
+// candidates without sharp edge fixed), to see the crease contrast alone.
+auto paper_open_lines() {
+  return CGAL::parameters::ilsa_minimum_open_crease_edges(0).ilsa_fix_unattached_candidates(true);
+}
+
 // The crease contrast (user manual, "Crease contrast"): the creases of a CAD
 // model stay creases (the fandisk keeps its ridge vertices), the curvature of
 // a coarse organic mesh is no longer taken for creases (the elephant's
 // corners drop to less than a third), 0 is the paper's rule, 5 the default, and a negative or
-// non-finite contrast is rejected.
+// non-finite contrast is rejected. The other rules of the classification as in the paper.
 template <class Mesh> void test_crease_contrast() {
   auto types = [](const Mesh& m, double contrast) {
     std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, PMP::ILSA_vertex_type> map;
     const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(map),
-                                               CGAL::parameters::ilsa_crease_contrast(contrast));
+                                               paper_open_lines().ilsa_crease_contrast(contrast));
     return s;
   };
   const Mesh fandisk = read_mesh<Mesh>(data_file("fandisk.off"));
@@ -335,13 +341,15 @@ template <class Mesh> void test_crease_contrast() {
   // with the paper's rule (user manual, "Crease contrast").
   auto smoothed = [](const Mesh& input, double contrast) {
     Mesh m = input;
-    PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_crease_contrast(contrast));
+    PMP::smooth_surface_mesh_ilsa(m, paper_open_lines().ilsa_crease_contrast(contrast));
     return m;
   };
   const Mesh paper_smoothed = smoothed(elephant, 0.), contrast_smoothed = smoothed(elephant, 5.);
   const auto crease_lines = [](const Mesh& original, const Mesh& m, double contrast) {
-    return PMP::mesh_fidelity_ilsa(
-        original, m, CGAL::parameters::ilsa_crease_contrast(contrast).ilsa_compute_hausdorff_distance(false));
+    return PMP::mesh_fidelity_ilsa(original, m,
+                                   CGAL::parameters::ilsa_crease_contrast(contrast)
+                                       .ilsa_minimum_open_crease_edges(0)
+                                       .ilsa_compute_hausdorff_distance(false));
   };
   const auto paper_lines = crease_lines(elephant, paper_smoothed, 0.);
   const auto contrast_lines = crease_lines(elephant, contrast_smoothed, 5.);
@@ -360,13 +368,15 @@ template <class Mesh> void test_crease_contrast() {
          crease_lines(fandisk, fandisk, 0.).number_of_sharp_edges);
   // The default is a contrast of 5, in the smoother and in the fidelity summary.
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, PMP::ILSA_vertex_type> map;
-  const auto defaults = PMP::classify_vertices_ilsa(elephant, boost::make_assoc_property_map(map));
+  const auto defaults = PMP::classify_vertices_ilsa(elephant, boost::make_assoc_property_map(map), paper_open_lines());
   assert(defaults.number_of_corner_vertices == contrasted_organic.number_of_corner_vertices &&
          defaults.number_of_ridge_vertices == contrasted_organic.number_of_ridge_vertices);
   Mesh default_smoothed = elephant;
-  PMP::smooth_surface_mesh_ilsa(default_smoothed);
+  PMP::smooth_surface_mesh_ilsa(default_smoothed, paper_open_lines());
   assert(points_of(default_smoothed) == points_of(contrast_smoothed));
-  assert(PMP::mesh_fidelity_ilsa(elephant, contrast_smoothed, CGAL::parameters::ilsa_compute_hausdorff_distance(false))
+  assert(PMP::mesh_fidelity_ilsa(
+             elephant, contrast_smoothed,
+             CGAL::parameters::ilsa_minimum_open_crease_edges(0).ilsa_compute_hausdorff_distance(false))
              .number_of_sharp_edges == contrast_lines.number_of_sharp_edges);
   for (const double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     Mesh m = elephant;
@@ -375,6 +385,132 @@ template <class Mesh> void test_crease_contrast() {
       PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_crease_contrast(bad));
     } catch (const PMP::ILSA_error& e) {
       thrown = std::string(e.what()).find("ilsa_crease_contrast") != std::string::npos;
+    }
+    assert(thrown && points_of(m) == points_of(elephant));
+  }
+}
+
+// The open-crease rule alone (internal/ILSA/feature_lines.h): which connected
+// sets of flagged edges it clears.
+void test_open_line_rule() {
+  using Edge = std::array<std::size_t, 2>;
+  auto run = [](std::size_t n, const std::vector<Edge>& edges, std::vector<unsigned char> flags,
+                std::vector<unsigned char> border, std::size_t minimum) {
+    border.resize(n, 0);
+    PMP::internal::ILSA::drop_short_open_lines(
+        n, [&edges](std::size_t e) { return edges[e]; }, [&border](std::size_t v) { return border[v] != 0; }, flags,
+        minimum);
+    return flags;
+  };
+  using Flags = std::vector<unsigned char>;
+  const std::vector<Edge> path{{0, 1}, {1, 2}, {2, 3}};
+  assert(run(4, path, {1, 1, 1}, {}, 4) == Flags({0, 0, 0})); // open, 3 edges < 4
+  assert(run(4, path, {1, 1, 1}, {}, 3) == Flags({1, 1, 1})); // 3 edges, not fewer than 3
+  for (std::size_t off : {0, 1}) assert(run(4, path, {1, 1, 1}, {}, off) == Flags({1, 1, 1}));
+  assert(run(4, path, {1, 1, 1}, {1, 0, 0, 1}, 20) == Flags({1, 1, 1})); // from border to border
+  assert(run(4, path, {1, 1, 1}, {1, 0, 0, 0}, 20) == Flags({0, 0, 0})); // one loose end is enough
+  assert(run(4, path, {1, 0, 1}, {}, 2) == Flags({0, 0, 0}));            // two sets of one edge
+  const std::vector<Edge> loop{{0, 1}, {1, 2}, {2, 0}};
+  assert(run(3, loop, {1, 1, 1}, {}, 20) == Flags({1, 1, 1})); // closed
+  assert(run(3, loop, {1, 1, 0}, {}, 20) == Flags({0, 0, 0})); // the same, opened
+  // A T of three edges with loose ends, and a separate edge; unflagged edges stay so.
+  const std::vector<Edge> t{{0, 1}, {1, 2}, {1, 3}, {4, 5}, {3, 4}};
+  assert(run(6, t, {1, 1, 1, 1, 0}, {}, 3) == Flags({1, 1, 1, 0, 0}));
+  assert(run(6, t, {1, 1, 1, 1, 1}, {}, 3) == Flags({1, 1, 1, 1, 1})); // joined: one set of five
+  std::cout << "open-crease rule: short open sets cleared, closed and border-to-border ones kept" << std::endl;
+}
+
+// The open-crease rule in the classification, the smoother and the fidelity
+// summary (user manual, "Open Crease Lines"): the creases of a CAD model stay
+// (the fandisk's, a cube's twelve edges, a fold from border to border), the
+// short pieces of curvature of a coarse organic mesh are no longer creases
+// (the elephant loses its ridge vertices and most of its corners), the
+// smoother and mesh_fidelity_ilsa() drop the same edges, 20 edges and smoothed
+// candidates are the defaults, and a negative minimum is rejected.
+template <class Mesh> void test_open_crease_lines() {
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  auto types = [](const Mesh& m, std::size_t minimum) {
+    std::map<vertex_descriptor, PMP::ILSA_vertex_type> map;
+    return PMP::classify_vertices_ilsa(
+        m, boost::make_assoc_property_map(map),
+        CGAL::parameters::ilsa_minimum_open_crease_edges(minimum).ilsa_fix_unattached_candidates(true));
+  };
+  auto crease_edges = [](const Mesh& m, std::size_t minimum) {
+    return PMP::mesh_fidelity_ilsa(
+               m, m, CGAL::parameters::ilsa_minimum_open_crease_edges(minimum).ilsa_compute_hausdorff_distance(false))
+        .number_of_sharp_edges;
+  };
+  // A cube of twelve triangles: twelve sharp edges, closed; a fold from border to border, six edges.
+  const Mesh box = to_mesh<Mesh>(cube(1));
+  Soup fold = grid(6);
+  for (Point& p : fold.points) p = Point(p.x(), p.y(), 0.4 * std::abs(p.x() - 0.5));
+  const Mesh folded = to_mesh<Mesh>(fold);
+  for (const Mesh* m : {&box, &folded}) {
+    const auto kept = types(*m, 20), paper = types(*m, 0);
+    assert(kept.number_of_corner_vertices == paper.number_of_corner_vertices &&
+           kept.number_of_ridge_vertices == paper.number_of_ridge_vertices);
+    assert(crease_edges(*m, 20) == crease_edges(*m, 0));
+  }
+  assert(types(box, 20).number_of_corner_vertices == 8 && crease_edges(box, 20) == 12);
+  // The fold's five inner vertices: three ridge vertices and, next to the
+  // border, two corners (a border vertex is no ridge candidate, so their edge
+  // to it is not sharp: the paper's rule).
+  assert(types(folded, 20).number_of_ridge_vertices == 3 && types(folded, 20).number_of_corner_vertices == 2 &&
+         crease_edges(folded, 20) == 6);
+
+  const Mesh fandisk = read_mesh<Mesh>(data_file("fandisk.off"));
+  const Mesh elephant = read_mesh<Mesh>(data_file("elephant.off"));
+  const auto cad = types(fandisk, 20), cad_paper = types(fandisk, 0);
+  const auto organic = types(elephant, 20), organic_paper = types(elephant, 0);
+  std::cout << "open crease lines, 20 edges: fandisk ridge " << cad_paper.number_of_ridge_vertices << " -> "
+            << cad.number_of_ridge_vertices << ", crease edges " << crease_edges(fandisk, 0) << " -> "
+            << crease_edges(fandisk, 20) << "; elephant ridge " << organic_paper.number_of_ridge_vertices << " -> "
+            << organic.number_of_ridge_vertices << ", corner " << organic_paper.number_of_corner_vertices << " -> "
+            << organic.number_of_corner_vertices << std::endl;
+  assert(cad.number_of_ridge_vertices == cad_paper.number_of_ridge_vertices &&
+         cad.number_of_corner_vertices == cad_paper.number_of_corner_vertices);
+  assert(crease_edges(fandisk, 20) == crease_edges(fandisk, 0));
+  assert(10 * organic.number_of_ridge_vertices < organic_paper.number_of_ridge_vertices);
+  assert(2 * organic.number_of_corner_vertices < organic_paper.number_of_corner_vertices);
+
+  // The smoother drops the same edges from the crease bound: the crease lines
+  // left stay within the tolerance, and at the distance to the input that
+  // tangential_relaxation() takes on the elephant (user manual, "Open Crease
+  // Lines") the freed vertices raise the mean q.
+  const double tolerance = 3e-3;
+  auto smoothed = [&](std::size_t minimum) {
+    Mesh m = elephant;
+    PMP::smooth_surface_mesh_ilsa(
+        m, CGAL::parameters::ilsa_minimum_open_crease_edges(minimum).ilsa_fidelity_tolerance(tolerance));
+    return m;
+  };
+  const Mesh with_rule = smoothed(20), without = smoothed(0);
+  const auto lines = PMP::mesh_fidelity_ilsa(
+      elephant, with_rule, CGAL::parameters::ilsa_minimum_open_crease_edges(20).ilsa_compute_hausdorff_distance(false));
+  const double q = PMP::mesh_quality_ilsa(with_rule).mean_aspect_ratio;
+  const double q_without = PMP::mesh_quality_ilsa(without).mean_aspect_ratio;
+  std::cout << "open crease lines, elephant smoothed: mean q " << q_without << " -> " << q << ", crease edges "
+            << crease_edges(elephant, 0) << " -> " << lines.number_of_sharp_edges << ", deviation "
+            << lines.max_crease_deviation << std::endl;
+  assert(lines.number_of_sharp_edges < crease_edges(elephant, 0));
+  assert(lines.max_crease_deviation <= tolerance + 1e-12);
+  assert(q > q_without + 0.005);
+  // The defaults: 20 edges, candidates without sharp edge smoothed.
+  Mesh defaults = elephant, stated = elephant;
+  PMP::smooth_surface_mesh_ilsa(defaults, CGAL::parameters::ilsa_fidelity_tolerance(tolerance));
+  PMP::smooth_surface_mesh_ilsa(stated, CGAL::parameters::ilsa_minimum_open_crease_edges(20)
+                                            .ilsa_fix_unattached_candidates(false)
+                                            .ilsa_fidelity_tolerance(tolerance));
+  assert(points_of(defaults) == points_of(stated) && points_of(defaults) == points_of(with_rule));
+  assert(PMP::mesh_fidelity_ilsa(elephant, with_rule, CGAL::parameters::ilsa_compute_hausdorff_distance(false))
+             .number_of_sharp_edges == lines.number_of_sharp_edges);
+  {
+    Mesh m = elephant;
+    bool thrown = false;
+    try {
+      PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_minimum_open_crease_edges(-1));
+    } catch (const PMP::ILSA_error& e) {
+      thrown = std::string(e.what()).find("ilsa_minimum_open_crease_edges") != std::string::npos;
     }
     assert(thrown && points_of(m) == points_of(elephant));
   }
@@ -391,6 +527,9 @@ int main() {
   test_two_sided_measure();
   test_crease_contrast<Surface_mesh>();
   test_crease_contrast<Polyhedron>();
+  test_open_line_rule();
+  test_open_crease_lines<Surface_mesh>();
+  test_open_crease_lines<Polyhedron>();
   std::cout << "test_ilsa_creases: all checks passed\n";
   return 0;
 }

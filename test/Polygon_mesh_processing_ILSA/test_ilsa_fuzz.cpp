@@ -244,6 +244,15 @@ int main() {
     std::mt19937 contrast_rng(15485863u + unsigned(c));
     const double contrast = unit(contrast_rng) < 0.5 ? 0. : 1. + 9. * unit(contrast_rng);
 
+    // The open-crease rule: the paper's (0) in a third of the cases, the
+    // default (20) in a third, else from 2 to 40 edges, drawn from a
+    // generator of its own.
+    std::mt19937 open_rng(49979687u + unsigned(c));
+    const double open_draw = unit(open_rng);
+    const unsigned open_edges = open_draw < 1. / 3.   ? 0u
+                                : open_draw < 2. / 3. ? 20u
+                                                      : 2u + unsigned(39 * unit(open_rng));
+
     // The sweeps of the penalty step (1 to 12) and the tangential
     // displacement (on in two cases of three, the default), drawn from a
     // generator of their own.
@@ -281,6 +290,7 @@ int main() {
                   .ilsa_reject_worsening_moves(reject_worsening)
                   .ilsa_crease_kink_angle(kink)
                   .ilsa_crease_contrast(contrast)
+                  .ilsa_minimum_open_crease_edges(open_edges)
                   .ilsa_fidelity_tolerance(tolerance)
                   .ilsa_minimum_quality_gain(gain)
                   .ilsa_minimum_remaining_gain(remaining_gain)
@@ -321,6 +331,7 @@ int main() {
                                       .ilsa_fix_unattached_candidates(fix)
                                       .ilsa_crease_kink_angle(kink)
                                       .ilsa_crease_contrast(contrast)
+                                      .ilsa_minimum_open_crease_edges(open_edges)
                                       .relax_constraints(relax)
                                       .vertex_is_constrained_map(boost::make_assoc_property_map(constrained_vertices));
       if (use_edge_map)
@@ -416,8 +427,10 @@ int main() {
                        ? PMP::mesh_fidelity_ilsa(original, m,
                                                  CGAL::parameters::ilsa_feature_angle(angle).edge_is_constrained_map(
                                                      boost::make_assoc_property_map(constrained_edges)))
-                       : PMP::mesh_fidelity_ilsa(
-                             original, m, CGAL::parameters::ilsa_feature_angle(angle).ilsa_crease_contrast(contrast));
+                       : PMP::mesh_fidelity_ilsa(original, m,
+                                                 CGAL::parameters::ilsa_feature_angle(angle)
+                                                     .ilsa_crease_contrast(contrast)
+                                                     .ilsa_minimum_open_crease_edges(open_edges));
     // No face ends below the input's minimum or the floor, whichever is lower
     // (up to the rounding of writing back the package's normalised coordinates).
     const double effective_floor = monotone ? 1. : default_floor ? (std::max)(0.5, before.min_aspect_ratio) : floor;
@@ -609,15 +622,16 @@ int main() {
                 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa << ", angle " << angle
                 << ", fix " << fix << ", floor " << (default_floor ? -1. : floor) << ", monotone " << monotone
                 << ", reject worsening " << reject_worsening << ", kink " << kink << ", crease contrast " << contrast
-                << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain " << remaining_gain
-                << ", retry distance " << retry << ", project " << project << ", safety " << safety << ", range "
-                << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map << ", relax "
-                << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges " << collapsed_edges
-                << ", zero-area input faces opened reversed " << reversed << ", distance " << f.max_vertex_distance
-                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
-                << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
-                << f.max_crease_deviation << ", parallel run identical " << same_in_parallel << ", same faces "
-                << same_faces << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
+                << ", open crease edges " << open_edges << ", tolerance " << tolerance << ", gain " << gain
+                << ", remaining gain " << remaining_gain << ", retry distance " << retry << ", project " << project
+                << ", safety " << safety << ", range " << use_range << ", vertex map " << use_vertex_map
+                << ", edge map " << use_edge_map << ", relax " << relax << "): flipped " << f.number_of_flipped_faces
+                << ", collapsed edges " << collapsed_edges << ", zero-area input faces opened reversed " << reversed
+                << ", distance " << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite "
+                << non_finite << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
+                << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
+                << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
+                << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
                 << statistics.number_of_iterations << " iterations run, " << allowed << " allowed"
                 << ", ridge vertex off the creases " << ridge_off_crease << ", one-iteration worsening test "
                 << worsening_ok << ", vertices four edges apart " << isolated_ok << ", convergence stop "

@@ -1129,6 +1129,7 @@ void test_documented_defaults() {
                                               {"ilsa_feature_angle", defaults::feature_angle},
                                               {"ilsa_fix_unattached_candidates", defaults::fix_unattached_candidates},
                                               {"ilsa_crease_contrast", defaults::crease_contrast},
+                                              {"ilsa_minimum_open_crease_edges", defaults::minimum_open_crease_edges},
                                               {"relax_constraints", defaults::relax_constraints},
                                               {"do_project", defaults::do_project},
                                               {"use_safety_constraints", defaults::use_safety_constraints},
@@ -1170,7 +1171,8 @@ void test_documented_defaults() {
   // The quality summaries list their parameters as "- `name` (default `value`)".
   {
     const std::string text = read("include/CGAL/Polygon_mesh_processing/mesh_quality_ilsa.h");
-    for (const std::string name : {"ilsa_quality_threshold", "ilsa_feature_angle"}) {
+    for (const std::string name :
+         {"ilsa_quality_threshold", "ilsa_feature_angle", "ilsa_crease_contrast", "ilsa_minimum_open_crease_edges"}) {
       const std::string key = "`" + name + "` (default `";
       for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
         const std::size_t open = at + key.size();
@@ -1213,6 +1215,7 @@ void test_documented_defaults() {
                                                       {"--feature-angle", "ilsa_feature_angle"},
                                                       {"--fix-unattached", "ilsa_fix_unattached_candidates"},
                                                       {"--crease-contrast", "ilsa_crease_contrast"},
+                                                      {"--min-open-crease-edges", "ilsa_minimum_open_crease_edges"},
                                                       {"--reject-worsening", "ilsa_reject_worsening_moves"},
                                                       {"--fidelity-tolerance", "ilsa_fidelity_tolerance"},
                                                       {"--retry-distance", "ilsa_retry_distance"}};
@@ -1230,7 +1233,7 @@ void test_documented_defaults() {
   std::cout << "documented defaults: " << checked << " statements agree with internal/ILSA/defaults.h (reference "
             << smoother << " + " << classification << " + " << quality << ", manual " << manual << ", tool " << tool
             << ")" << std::endl;
-  assert(smoother >= 17 && classification >= 3 && quality >= 2 && manual >= 15 && tool == 17);
+  assert(smoother >= 18 && classification >= 4 && quality >= 4 && manual >= 16 && tool == 18);
 }
 
 int main() {

@@ -35,8 +35,11 @@ namespace Polygon_mesh_processing {
  * edges where the crease turns by more than `ilsa_crease_kink_angle` is a
  * corner too (a kink). With a crease contrast `c` > 0 (`ilsa_crease_contrast`),
  * such an edge is sharp only if its angle is at least `c` times that of the
- * flatter of the two other edges of each of its faces, and a candidate left
- * with fewer than two sharp edges by this rule is a smooth vertex. Isolated and
+ * flatter of the two other edges of each of its faces. With a minimum `n` > 1
+ * (`ilsa_minimum_open_crease_edges`), a connected set of fewer than `n` such
+ * edges that has an end (a vertex with one of them only) is curvature, not a
+ * crease line: none of its edges is sharp. A candidate left with fewer than two
+ * sharp edges by these two rules is a smooth vertex. Isolated and
  * non-manifold vertices are corners.
  *
  * @tparam TriangleMesh a model of `VertexListGraph`, `EdgeListGraph`, `FaceListGraph` and `HalfedgeGraph`
@@ -63,7 +66,7 @@ namespace Polygon_mesh_processing {
  * \cgalParamDefault{`20` (the paper's dihedral θ_f = 8π/9)} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
  *     \cgalParamDescription{whether a ridge candidate with no sharp edge is a corner (the paper's rule) or a smooth
- * vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
+ * vertex} \cgalParamType{`bool`} \cgalParamDefault{`false`} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_crease_contrast}
  *     \cgalParamDescription{an edge whose face normals are more than `ilsa_feature_angle` apart is sharp only if
  * their angle is at least this many times that of the flatter of the two other edges of each of its faces: on a
@@ -72,6 +75,14 @@ namespace Polygon_mesh_processing {
  * the paper's rule. Ignored with an `edge_is_constrained_map`}
  *     \cgalParamType{`double`, non-negative and finite}
  *     \cgalParamDefault{`5`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_minimum_open_crease_edges}
+ *     \cgalParamDescription{a connected set of edges beyond `ilsa_feature_angle` (kept by the crease contrast) that has
+ * an end and fewer edges than this is curvature, not a crease line: none of its edges is sharp (user manual, "Open
+ * Crease Lines"; not in the paper). `0` keeps every such set, the paper's rule. Ignored with an
+ * `edge_is_constrained_map`}
+ *     \cgalParamType{an integer, in [0, 1e9]}
+ *     \cgalParamDefault{`20`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_crease_kink_angle}
  *     \cgalParamDescription{a vertex with two sharp edges where the crease turns by more than this angle (degrees) is a

@@ -134,8 +134,8 @@ struct ILSA_fidelity_summary {
   bool closed = false;
   double volume_change = 0;              ///< (V_smoothed - V_original) / V_original, closed meshes only
   std::size_t number_of_sharp_edges = 0; ///< crease edges: sharp edges of the original (face normals more than the
-                                         ///< feature angle apart, kept by the crease contrast when one is given),
-                                         ///< or the constrained edges when a map is given
+                                         ///< feature angle apart, kept by the crease contrast when one is given,
+                                         ///< not in a short open set), or the constrained edges when a map is given
   /// Two-sided distance between the original's crease edges and the same edges of the smoothed mesh: every edge of
   /// either polyline is sampled (ends and seven inner points) and each sample is measured against the whole other
   /// polyline. A crease cut short (an original point far from the smoothed crease) and a crease bent away from the
@@ -217,13 +217,14 @@ Vertex_pairs constrained_edges(const TriangleMesh& original, const NamedParamete
 }
 
 // The crease edges of `a` (the constrained ones when `user_creases`, else the
-// sharp ones: face normals more than the feature angle apart and, with a
-// crease `contrast` above 0, kept by keeps_crease_contrast()), and the same
+// sharp ones: face normals more than the feature angle apart, with a crease
+// `contrast` above 0 kept by keeps_crease_contrast(), and not in an open set
+// of fewer than `minimum_open_edges`, drop_short_open_lines()), and the same
 // edges with the points `pb` (not the smoothed mesh's own sharp edges: an edge
 // near the threshold could change side).
 inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vector<Point>& pb, bool user_creases,
                                                   const Vertex_pairs& constrained, double feature_angle,
-                                                  double contrast) {
+                                                  double contrast, std::size_t minimum_open_edges) {
   const double sharp_cosine = feature_cosine(feature_angle);
   // The cosine of the angle between the face normals of each edge; 1 (flat)
   // on the border and next to a degenerate face, whose normal is zero.
@@ -239,18 +240,33 @@ inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vect
   auto angle = [&](Mesh::Halfedge_index h) { return normal_angle(cosine[std::size_t(edge(h, a))]); };
   // The angle of the flatter of the two edges of the face of `h` other than `h`'s.
   auto flatter = [&](Mesh::Halfedge_index h) { return (std::min)(angle(next(h, a)), angle(prev(h, a))); };
-  std::pair<Segments, Segments> creases;
+  auto ends = [&a](std::size_t e) {
+    const auto h = halfedge(Mesh::Edge_index(Mesh::size_type(e)), a);
+    return std::array<std::size_t, 2>{std::size_t(source(h, a)), std::size_t(target(h, a))};
+  };
+  std::vector<unsigned char> crease(num_edges(a), 0);
   for (auto e : edges(a)) {
     const auto h = halfedge(e, a);
     if (user_creases) {
-      const std::size_t i = std::size_t(source(h, a)), j = std::size_t(target(h, a));
-      if (!constrained.count({(std::min)(i, j), (std::max)(i, j)})) continue;
-    } else {
-      if (!(cosine[std::size_t(e)] < sharp_cosine)) continue;
-      if (contrast > 0 && !keeps_crease_contrast(angle(h), flatter(h), flatter(opposite(h, a)), contrast)) continue;
-    }
-    creases.first.emplace_back(a.point(source(h, a)), a.point(target(h, a)));
-    creases.second.emplace_back(pb[std::size_t(source(h, a))], pb[std::size_t(target(h, a))]);
+      const auto ab = ends(std::size_t(e));
+      crease[std::size_t(e)] = constrained.count({(std::min)(ab[0], ab[1]), (std::max)(ab[0], ab[1])}) > 0;
+    } else
+      crease[std::size_t(e)] =
+          cosine[std::size_t(e)] < sharp_cosine &&
+          !(contrast > 0 && !keeps_crease_contrast(angle(h), flatter(h), flatter(opposite(h, a)), contrast));
+  }
+  if (!user_creases)
+    drop_short_open_lines(
+        num_vertices(a), ends,
+        [&a](std::size_t v) { return bool(CGAL::is_border(Mesh::Vertex_index(Mesh::size_type(v)), a)); }, crease,
+        minimum_open_edges);
+  std::pair<Segments, Segments> creases;
+  for (auto e : edges(a)) {
+    if (!crease[std::size_t(e)]) continue;
+    const auto ab = ends(std::size_t(e));
+    creases.first.emplace_back(a.point(Mesh::Vertex_index(Mesh::size_type(ab[0]))),
+                               a.point(Mesh::Vertex_index(Mesh::size_type(ab[1]))));
+    creases.second.emplace_back(pb[ab[0]], pb[ab[1]]);
   }
   return creases;
 }
@@ -295,6 +311,10 @@ inline void crease_deviation(const Segments& original_crease, const Segments& sm
 ///   0, only the sharp edges that keep it, as in `smooth_surface_mesh_ilsa()`
 ///   (user manual, "Crease contrast"); pass the smoother's value to measure its
 ///   crease lines, `0` to measure every edge beyond the feature angle;
+/// - `ilsa_minimum_open_crease_edges` (default `20`, the smoother's): the
+///   crease edges leave out every connected set of fewer edges that has an
+///   end, as in `smooth_surface_mesh_ilsa()` (user manual, "Open Crease
+///   Lines"); `0` keeps them;
 /// - `edge_is_constrained_map`: a map from the edges of `original` to `bool`;
 ///   when given, its edges are the crease edges instead of the sharp ones;
 /// - `random_seed` (default 0): the seed of the Hausdorff distance, which
@@ -316,6 +336,8 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
   const bool with_hausdorff = choose_parameter(get_parameter(np, internal_np::ilsa_compute_hausdorff_distance), true);
   const double contrast =
       choose_parameter(get_parameter(np, internal_np::ilsa_crease_contrast), internal::ILSA::defaults::crease_contrast);
+  const auto minimum_open_edges = choose_parameter(get_parameter(np, internal_np::ilsa_minimum_open_crease_edges),
+                                                   internal::ILSA::defaults::minimum_open_crease_edges);
   ILSA_fidelity_summary r;
 
   // Plain double copies; both are made the same way, so their vertices and
@@ -348,7 +370,7 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
       !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
   const auto creases = fidelity::crease_edges(
       a, pb, user_creases, user_creases ? fidelity::constrained_edges(original, np, copied) : fidelity::Vertex_pairs(),
-      feature_angle, contrast);
+      feature_angle, contrast, double(minimum_open_edges) > 0 ? std::size_t(minimum_open_edges) : 0);
   r.number_of_sharp_edges = creases.first.size();
   if (!creases.first.empty()) fidelity::crease_deviation(creases.first, creases.second, scale, r);
   return r;

@@ -175,7 +175,8 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
  *     \cgalParamDescription{whether a ridge candidate with no sharp edge is fixed as a corner (the paper's rule) or
- * smoothed as a smooth vertex} \cgalParamType{`bool`} \cgalParamDefault{`true`} \cgalParamNEnd
+ * smoothed as a smooth vertex (user manual, "Open Crease Lines")} \cgalParamType{`bool`}
+ * \cgalParamDefault{`false`} \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_crease_contrast}
  *     \cgalParamDescription{an edge whose face normals are more than `ilsa_feature_angle` apart is sharp only if
  * their angle is at least this many times that of the flatter of the two other edges of each of its faces: on a
@@ -185,6 +186,16 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  * candidates sharp, the paper's rule. Ignored with an `edge_is_constrained_map`}
  *     \cgalParamType{`double`, non-negative and finite}
  *     \cgalParamDefault{`5`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_minimum_open_crease_edges}
+ *     \cgalParamDescription{a connected set of edges beyond `ilsa_feature_angle` (kept by the crease contrast) that has
+ * an end (a vertex with one of these edges only) and fewer edges than this is curvature, not a crease line: neither
+ * sharp nor held by the crease bound of `ilsa_fidelity_tolerance`. Along a crease of a CAD model the feature edges run
+ * from corner to corner or around a loop; on a coarse organic mesh they come in short pieces that fade out (user
+ * manual, "Open Crease Lines"; not in the paper). `0` keeps every such set, the paper's rule. Ignored with an
+ * `edge_is_constrained_map`}
+ *     \cgalParamType{an integer, in [0, 1e9]}
+ *     \cgalParamDefault{`20`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_crease_kink_angle}
  *     \cgalParamDescription{a vertex with two sharp (or constrained) edges is fixed like a corner when the crease
@@ -258,10 +269,10 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  * vertex or of a neighbour to the smoothed faces around it (a bump or a crease bend cut off), or from the centroid and
  * edge midpoints of the faces around the vertex to the input faces around them (a chord over a fold). The same bound
  * holds along the feature lines, both ways: the input's sharp edges (or constrained edges) and the edges whose face
- * normals are more than `ilsa_feature_angle` apart (with a crease contrast, those it keeps) may not move farther than
- * it from their input position, nor their input points end farther than it from them. Relative to the bounding-box
- * diagonal. `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no such bound)}
- * \cgalParamType{`double`, positive} \cgalParamDefault{`3e-4`} \cgalParamNEnd \cgalParamNBegin{callback}
+ * normals are more than `ilsa_feature_angle` apart (those the crease contrast and the open-crease rule keep) may not
+ * move farther than it from their input position, nor their input points end farther than it from them. Relative to the
+ * bounding-box diagonal. `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no
+ * such bound)} \cgalParamType{`double`, positive} \cgalParamDefault{`3e-4`} \cgalParamNEnd \cgalParamNBegin{callback}
  *     \cgalParamDescription{called after each iteration with the advancement, the iterations run over
  * `number_of_iterations` (the last call may come before 1 when the run stops early); when it returns `false`, the
  * run stops there, with the mesh as that iteration left it (every guarantee holds after any iteration)}

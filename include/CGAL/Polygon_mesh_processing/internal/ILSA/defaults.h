@@ -37,8 +37,9 @@ inline constexpr double area_weight = 0.1;  // wa
 // (CGAL's convention; the paper's dihedral θ_f is 180° minus it). The crease
 // kink angle defaults to the feature angle given.
 inline constexpr double feature_angle = 20.;
-inline constexpr bool fix_unattached_candidates = true;
+inline constexpr bool fix_unattached_candidates = false; // true: the paper's rule
 inline constexpr double crease_contrast = 5.; // 0: the paper's rule (every feature edge between candidates is sharp)
+inline constexpr unsigned int minimum_open_crease_edges = 20; // 0: the paper's rule (no feature edge is dropped)
 inline constexpr bool relax_constraints = false;
 
 // Safety check (user manual, "Safety check"). The quality floor is raised to

@@ -1,16 +1,19 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The two rules of the feature lines that the smoother and the fidelity
-// summary (mesh_fidelity_ilsa()) must apply alike: when an edge is a feature
-// edge, and at which points a feature edge is measured (user manual,
-// "Crease fidelity").
+// The rules of the feature lines that the smoother and the fidelity summary
+// (mesh_fidelity_ilsa()) must apply alike: when an edge is a feature edge
+// (feature angle, crease contrast, open crease lines), and at which points a
+// feature edge is measured (user manual, "Crease fidelity").
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FEATURE_LINES_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FEATURE_LINES_H
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <vector>
 
 namespace CGAL {
 namespace Polygon_mesh_processing {
@@ -46,6 +49,47 @@ inline double normal_angle(double cosine) {
 /// mesh_fidelity_ilsa() (the crease deviation) both decide by this test.
 inline bool keeps_crease_contrast(double angle, double flatter0, double flatter1, double contrast) {
   return !(angle < contrast * (std::max)(flatter0, flatter1));
+}
+
+/// The open-crease rule (user manual, "Open Crease Lines"): among the edges
+/// whose flag in `lines` is set, a connected set (edges sharing a vertex) of
+/// fewer than `minimum_edges` edges that has a loose end, a vertex with one of
+/// its edges only that is not on the border (`on_border(v)`), is curvature,
+/// not a crease line: the flags of its edges are cleared. A closed set (a
+/// loop, the edges of a polyhedron), a set running from border to border and
+/// a longer one stay. Along a crease of a CAD model the feature edges run from
+/// corner to corner, around a loop or to the border; on a coarse organic mesh
+/// they come in short pieces that fade out on the surface. `ends(e)` gives the
+/// two vertices of edge `e`, numbered below `number_of_vertices`.
+template <class Ends, class OnBorder>
+void drop_short_open_lines(std::size_t number_of_vertices, const Ends& ends, const OnBorder& on_border,
+                           std::vector<unsigned char>& lines, std::size_t minimum_edges) {
+  if (minimum_edges < 2) return; // no set has fewer than one edge
+  std::vector<std::size_t> parent(number_of_vertices);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&parent](std::size_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  std::vector<std::size_t> degree(number_of_vertices, 0);
+  for (std::size_t e = 0; e < lines.size(); ++e)
+    if (lines[e]) {
+      const auto ab = ends(e);
+      parent[find(std::size_t(ab[0]))] = find(std::size_t(ab[1]));
+      ++degree[std::size_t(ab[0])], ++degree[std::size_t(ab[1])];
+    }
+  // Per set (at its representative vertex): its number of edges, and whether it has a loose end.
+  std::vector<std::size_t> size(number_of_vertices, 0);
+  std::vector<unsigned char> open(number_of_vertices, 0);
+  for (std::size_t e = 0; e < lines.size(); ++e)
+    if (lines[e]) ++size[find(std::size_t(ends(e)[0]))];
+  for (std::size_t v = 0; v < number_of_vertices; ++v)
+    if (degree[v] == 1 && !on_border(v)) open[find(v)] = 1;
+  for (std::size_t e = 0; e < lines.size(); ++e)
+    if (lines[e]) {
+      const std::size_t set = find(std::size_t(ends(e)[0]));
+      if (open[set] && size[set] < minimum_edges) lines[e] = 0;
+    }
 }
 
 /// A feature edge is measured at the points k / crease_samples of the way

@@ -68,6 +68,14 @@ Classification_options read_classification_parameters(
     throw ILSA_error("ilsa_crease_contrast must be non-negative and finite (0: the paper's rule), got " +
                      std::to_string(options.crease_contrast));
 
+  // Any integer type; its value converted to double (negative or huge: an error).
+  const auto minimum_edges = choose_parameter(get_parameter(np, internal_np::ilsa_minimum_open_crease_edges),
+                                              defaults::minimum_open_crease_edges);
+  if (!(double(minimum_edges) >= 0 && double(minimum_edges) <= 1e9))
+    throw ILSA_error("ilsa_minimum_open_crease_edges must be in [0, 1e9] (0: the paper's rule), got " +
+                     std::to_string(double(minimum_edges)));
+  options.minimum_open_crease_edges = std::size_t(minimum_edges);
+
   const auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
                                     Static_boolean_property_map<vertex_descriptor, false>());
   vertex_store.resize(vertex_list.size());

@@ -80,6 +80,9 @@ struct Classification_options {
   // A feature edge between candidates is sharp only if its angle is at least this times the angle of the flatter
   // of the two other edges of each of its faces (user manual, "Crease contrast"); 0: every one is (the paper).
   double crease_contrast = defaults::crease_contrast;
+  // An open set of connected feature edges with fewer edges is curvature (user manual, "Open Crease Lines");
+  // 0: none is dropped (the paper).
+  std::size_t minimum_open_crease_edges = defaults::minimum_open_crease_edges;
   const std::vector<unsigned char>* constrained_vertices = nullptr; // user's vertex_is_constrained_map
   const std::vector<unsigned char>* constrained_edges = nullptr;    // user's edge_is_constrained_map
 };
@@ -140,7 +143,7 @@ struct Classification_work {
   std::vector<Vec3> face_normals;
   std::vector<unsigned char> ridge_candidate; // per vertex: |x| above the feature threshold
   std::vector<unsigned char> sharp_edge;      // per edge (paper §3 or the user's edge map)
-  std::vector<unsigned char> curved;          // per vertex, with a crease contrast: lost a sharp edge to it
+  std::vector<unsigned char> curved;          // per vertex: lost a sharp edge to the contrast or the open-crease rule
 };
 
 /// Boundary vertices, isolated and non-manifold vertices (corners), and the
@@ -162,8 +165,8 @@ inline void mark_fixed_and_candidates(const Flat_mesh& m, const Set_up_incidence
 
 /// Feature edges (face normals more than the feature angle apart) and sharp
 /// edges (feature edges between two ridge candidates, paper §3, or the user's
-/// constrained edges); with a crease contrast, the feature edges it drops are
-/// neither.
+/// constrained edges); the feature edges that the crease contrast or the
+/// open-crease rule drops are neither.
 inline void mark_feature_and_sharp_edges(const Flat_mesh& m, const Set_up_incidences& incidences,
                                          const Classification_options& opt, Vertex_classification& c,
                                          Classification_work& w) {
@@ -185,6 +188,18 @@ inline void mark_feature_and_sharp_edges(const Flat_mesh& m, const Set_up_incide
   if (!opt.constrained_edges && opt.crease_contrast > 0) {
     w.curved.assign(m.number_of_vertices(), 0);
     keep_contrasted_creases(m, incidences, w.face_normals, opt.crease_contrast, c.feature_edge, w.sharp_edge, w.curved);
+  }
+  if (!opt.constrained_edges && opt.minimum_open_crease_edges > 1) {
+    // The sharp edges are feature edges here: a sharp edge the rule drops
+    // makes its ends `curved`, as the contrast does.
+    drop_short_open_lines(
+        m.number_of_vertices(), [&m](std::size_t e) { return m.edges[e]; },
+        [&incidences](std::size_t v) { return incidences.on_border[v] != 0; }, c.feature_edge,
+        opt.minimum_open_crease_edges);
+    if (w.curved.empty()) w.curved.assign(m.number_of_vertices(), 0);
+    for (std::size_t e = 0; e < m.edges.size(); ++e)
+      if (w.sharp_edge[e] && !c.feature_edge[e])
+        w.sharp_edge[e] = 0, w.curved[m.edges[e][0]] = w.curved[m.edges[e][1]] = 1;
   }
   for (std::size_t e = 0; e < m.edges.size(); ++e) c.feature_edge[e] = c.feature_edge[e] || w.sharp_edge[e];
 }
@@ -221,8 +236,9 @@ inline void type_candidates(const Flat_mesh& m, const Classification_options& op
     }
     const bool candidate = opt.constrained_edges ? count > 0 : bool(w.ridge_candidate[v]);
     if (!candidate) continue;
-    // Where the crease contrast dropped sharp edges, fewer than two left: a
-    // vertex of a curved surface (or the end of a crease fading into it).
+    // Where the crease contrast or the open-crease rule dropped sharp edges,
+    // fewer than two left: a vertex of a curved surface (or the end of a
+    // crease fading into it).
     if (!w.curved.empty() && w.curved[v] && count < 2) continue;
     if (count == 2 && is_kink(m.points[v], m.points[attached_sharp[0]], m.points[attached_sharp[1]])) {
       c.type[v] = ILSA_vertex_type::Corner;
