@@ -2,8 +2,9 @@
 # The crease contrast (user manual, "Crease contrast") on every bundled mesh,
 # and every mesh of ../shared/data when it exists: one Markdown row per mesh,
 # one cell per contrast with mean q / Hausdorff distance / crease deviation
-# (along the crease lines the contrast keeps) / deviation along every edge
-# beyond the feature angle (the same with a contrast of 0) / ridge vertices /
+# (along the crease lines the contrast and the open-crease rule keep) /
+# deviation along every edge beyond the feature angle (the same with a
+# contrast of 0 and no open-crease rule) / ridge vertices /
 # fixed vertices (corner and boundary), the fidelity tolerance the default or
 # the one given for the mesh.
 #
