@@ -356,37 +356,26 @@ void run_crease_sets(const std::vector<std::string>& files) {
     const auto flat = ilsa::classified_flat_copy(input, get(CGAL::vertex_point, input), np, incidences);
     const ilsa::Flat_mesh& m = flat.mesh;
     const std::vector<unsigned char>& feature = flat.classification.feature_edge;
-    // Sets by union-find over the vertices, as drop_short_open_lines() forms them.
-    std::vector<std::size_t> parent(m.number_of_vertices()), degree(m.number_of_vertices(), 0);
-    for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = v;
-    auto find = [&parent](std::size_t v) {
-      while (parent[v] != v) v = parent[v] = parent[parent[v]];
-      return v;
-    };
-    std::size_t features = 0;
-    for (std::size_t e = 0; e < m.edges.size(); ++e)
-      if (feature[e]) {
-        ++features, ++degree[m.edges[e][0]], ++degree[m.edges[e][1]];
-        parent[find(m.edges[e][0])] = find(m.edges[e][1]);
-      }
-    std::map<std::size_t, std::size_t> size;
-    std::map<std::size_t, bool> loose;
-    for (std::size_t e = 0; e < m.edges.size(); ++e)
-      if (feature[e]) ++size[find(m.edges[e][0])];
-    for (std::size_t v = 0; v < degree.size(); ++v)
-      if (degree[v] == 1 && !incidences.on_border[v]) loose[find(v)] = true;
+    // The sets as the rule forms them (drop_short_open_lines()).
+    const ilsa::Line_sets sets = ilsa::line_sets(
+        m.number_of_vertices(), [&m](std::size_t e) { return m.edges[e]; },
+        [&incidences](std::size_t v) { return incidences.on_border[v] != 0; }, feature);
+    const std::size_t minimum = ilsa::defaults::minimum_open_crease_edges;
+    const std::size_t features = std::size_t(std::count(feature.begin(), feature.end(), 1));
     std::vector<std::size_t> sizes;
     std::size_t open = 0, dropped = 0, dropped_edges = 0;
-    for (const auto& [set, n] : size) {
-      sizes.push_back(n);
-      open += loose[set];
-      if (loose[set] && n < ilsa::defaults::minimum_open_crease_edges) ++dropped, dropped_edges += n;
+    for (std::size_t set = 0; set < sets.size.size(); ++set) {
+      if (sets.size[set] == 0) continue;
+      sizes.push_back(sets.size[set]);
+      open += sets.loose[set];
+      if (ilsa::is_short_open_line(sets, set, minimum)) ++dropped, dropped_edges += sets.size[set];
     }
     std::sort(sizes.rbegin(), sizes.rend());
     std::string largest;
     for (std::size_t i = 0; i < sizes.size() && i < 5; ++i) largest += (i ? ", " : "") + std::to_string(sizes[i]);
+    PMP::ILSA_statistics off; // the classification made above, the rule off
+    ilsa::count_types(flat.classification, off);
     std::map<Mesh::Vertex_index, PMP::ILSA_vertex_type> types;
-    const auto off = PMP::classify_vertices_ilsa(input, boost::make_assoc_property_map(types), np);
     const auto on =
         PMP::classify_vertices_ilsa(input, boost::make_assoc_property_map(types),
                                     CGAL::parameters::ilsa_fix_unattached_candidates(true)); // the rule's default

@@ -253,7 +253,7 @@ inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vect
     } else
       crease[std::size_t(e)] =
           cosine[std::size_t(e)] < sharp_cosine &&
-          !(contrast > 0 && !keeps_crease_contrast(angle(h), flatter(h), flatter(opposite(h, a)), contrast));
+          (!(contrast > 0) || keeps_crease_contrast(angle(h), flatter(h), flatter(opposite(h, a)), contrast));
   }
   if (!user_creases)
     drop_short_open_lines(

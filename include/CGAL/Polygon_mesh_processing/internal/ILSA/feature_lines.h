@@ -51,20 +51,20 @@ inline bool keeps_crease_contrast(double angle, double flatter0, double flatter1
   return !(angle < contrast * (std::max)(flatter0, flatter1));
 }
 
-/// The open-crease rule (user manual, "Open Crease Lines"): among the edges
-/// whose flag in `lines` is set, a connected set (edges sharing a vertex) of
-/// fewer than `minimum_edges` edges that has a loose end, a vertex with one of
-/// its edges only that is not on the border (`on_border(v)`), is curvature,
-/// not a crease line: the flags of its edges are cleared. A closed set (a
-/// loop, the edges of a polyhedron), a set running from border to border and
-/// a longer one stay. Along a crease of a CAD model the feature edges run from
-/// corner to corner, around a loop or to the border; on a coarse organic mesh
-/// they come in short pieces that fade out on the surface. `ends(e)` gives the
+/// The connected sets (edges sharing a vertex) of the edges whose flag in
+/// `lines` is set: per edge its set (npos, (std::size_t)-1, for an unflagged
+/// edge), per set its number of edges and whether it has a loose end, a
+/// vertex with one of its edges only that is not on the border
+/// (`on_border(v)`). A set is named by one of its vertices; `ends(e)` gives the
 /// two vertices of edge `e`, numbered below `number_of_vertices`.
+struct Line_sets {
+  std::vector<std::size_t> set_of_edge;
+  std::vector<std::size_t> size;    // per set
+  std::vector<unsigned char> loose; // per set
+};
 template <class Ends, class OnBorder>
-void drop_short_open_lines(std::size_t number_of_vertices, const Ends& ends, const OnBorder& on_border,
-                           std::vector<unsigned char>& lines, std::size_t minimum_edges) {
-  if (minimum_edges < 2) return; // no set has fewer than one edge
+Line_sets line_sets(std::size_t number_of_vertices, const Ends& ends, const OnBorder& on_border,
+                    const std::vector<unsigned char>& lines) {
   std::vector<std::size_t> parent(number_of_vertices);
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   auto find = [&parent](std::size_t v) {
@@ -78,18 +78,33 @@ void drop_short_open_lines(std::size_t number_of_vertices, const Ends& ends, con
       parent[find(std::size_t(ab[0]))] = find(std::size_t(ab[1]));
       ++degree[std::size_t(ab[0])], ++degree[std::size_t(ab[1])];
     }
-  // Per set (at its representative vertex): its number of edges, and whether it has a loose end.
-  std::vector<std::size_t> size(number_of_vertices, 0);
-  std::vector<unsigned char> open(number_of_vertices, 0);
+  Line_sets sets{std::vector<std::size_t>(lines.size(), std::size_t(-1)),
+                 std::vector<std::size_t>(number_of_vertices, 0), std::vector<unsigned char>(number_of_vertices, 0)};
   for (std::size_t e = 0; e < lines.size(); ++e)
-    if (lines[e]) ++size[find(std::size_t(ends(e)[0]))];
+    if (lines[e]) ++sets.size[sets.set_of_edge[e] = find(std::size_t(ends(e)[0]))];
   for (std::size_t v = 0; v < number_of_vertices; ++v)
-    if (degree[v] == 1 && !on_border(v)) open[find(v)] = 1;
+    if (degree[v] == 1 && !on_border(v)) sets.loose[find(v)] = 1;
+  return sets;
+}
+
+/// The open-crease rule (user manual, "Open Crease Lines"): among the edges
+/// whose flag in `lines` is set, a connected set of fewer than
+/// `minimum_edges` edges that has a loose end (line_sets()) is curvature, not
+/// a crease line: the flags of its edges are cleared. A closed set (a loop,
+/// the edges of a polyhedron), a set running from border to border and a
+/// longer one stay. Along a crease of a CAD model the feature edges run from
+/// corner to corner, around a loop or to the border; on a coarse organic mesh
+/// they come in short pieces that fade out on the surface.
+inline bool is_short_open_line(const Line_sets& sets, std::size_t set, std::size_t minimum_edges) {
+  return sets.loose[set] && sets.size[set] < minimum_edges;
+}
+template <class Ends, class OnBorder>
+void drop_short_open_lines(std::size_t number_of_vertices, const Ends& ends, const OnBorder& on_border,
+                           std::vector<unsigned char>& lines, std::size_t minimum_edges) {
+  if (minimum_edges < 2) return; // no set has fewer than one edge
+  const Line_sets sets = line_sets(number_of_vertices, ends, on_border, lines);
   for (std::size_t e = 0; e < lines.size(); ++e)
-    if (lines[e]) {
-      const std::size_t set = find(std::size_t(ends(e)[0]));
-      if (open[set] && size[set] < minimum_edges) lines[e] = 0;
-    }
+    if (lines[e] && is_short_open_line(sets, sets.set_of_edge[e], minimum_edges)) lines[e] = 0;
 }
 
 /// A feature edge is measured at the points k / crease_samples of the way
