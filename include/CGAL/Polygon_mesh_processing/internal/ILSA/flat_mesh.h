@@ -365,20 +365,34 @@ void read_edges(const TriangleMesh& tm, const VertexIndices& vertex_index, const
     Index a, b, f0, f1, descriptor;
   };
   const std::vector<typename GT::edge_descriptor> graph_edges(edges(tm).begin(), edges(tm).end());
-  std::vector<Edge_record> records;
   require_indexable(2 * graph_edges.size(), "edge ends");
-  records.reserve(graph_edges.size());
+  // The halfedge from the lower index to the higher.
+  auto ascending = [&](const typename GT::edge_descriptor& e) {
+    const auto h = halfedge(e, tm);
+    return vertex_index(source(h, tm)) > vertex_index(target(h, tm)) ? opposite(h, tm) : h;
+  };
+  // Sorted by (a, b), then by the graph's order where two edges join the same
+  // two vertices, in linear time: placed by `a` (a counting sort), then each
+  // vertex's few sorted by `b`.
+  const std::size_t nv = m.number_of_vertices();
+  std::vector<Index> first(nv + 1, 0);
+  for (const auto& e : graph_edges) ++first[vertex_index(source(ascending(e), tm)) + 1];
+  for (std::size_t i = 0; i < nv; ++i) first[i + 1] += first[i];
+  std::vector<Edge_record> records(graph_edges.size());
   for (std::size_t k = 0; k < graph_edges.size(); ++k) {
-    auto h = halfedge(graph_edges[k], tm);
-    if (vertex_index(source(h, tm)) > vertex_index(target(h, tm))) h = opposite(h, tm);
+    const auto h = ascending(graph_edges[k]);
     const auto f0 = face(h, tm), f1 = face(opposite(h, tm), tm);
-    records.push_back({Index(vertex_index(source(h, tm))), Index(vertex_index(target(h, tm))),
-                       f0 == GT::null_face() ? npos : Index(face_index(f0)),
-                       f1 == GT::null_face() ? npos : Index(face_index(f1)), Index(k)});
+    const std::size_t a = vertex_index(source(h, tm));
+    records[first[a]++] = {Index(a), Index(vertex_index(target(h, tm))),
+                           f0 == GT::null_face() ? npos : Index(face_index(f0)),
+                           f1 == GT::null_face() ? npos : Index(face_index(f1)), Index(k)};
   }
-  std::sort(records.begin(), records.end(), [](const Edge_record& x, const Edge_record& y) {
-    return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
-  });
+  for (std::size_t i = 0, begin = 0; i < nv; begin = first[i++])
+    std::sort(records.begin() + std::ptrdiff_t(begin), records.begin() + std::ptrdiff_t(first[i]),
+              [](const Edge_record& x, const Edge_record& y) {
+                return std::make_pair(x.b, x.descriptor) < std::make_pair(y.b, y.descriptor);
+              });
+  release(first);
 
   incidences.on_border.assign(m.number_of_vertices(), 0);
   edge_list.clear();

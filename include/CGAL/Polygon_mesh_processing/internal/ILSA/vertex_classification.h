@@ -146,44 +146,59 @@ struct Classification_work {
   std::vector<unsigned char> curved;          // per vertex: lost a sharp edge to the contrast or the open-crease rule
 };
 
+/// Feature edges: face normals more than the feature angle apart (the
+/// paper's dihedral angle below θ_f). Not with the user's edge map, whose
+/// edges are the sharp edges (mark_sharp_edges()).
+inline void mark_feature_edges(const Flat_mesh& m, const Set_up_incidences& incidences,
+                               const Classification_options& opt, Vertex_classification& c,
+                               const Classification_work& w) {
+  if (opt.constrained_edges) return;
+  const double sharp_cosine = feature_cosine(opt.feature_angle_degrees);
+  for (std::size_t e = 0; e < m.edges.size(); ++e) {
+    const auto& fs = incidences.edge_faces[e];
+    if (fs[0] != npos && fs[1] != npos)
+      c.feature_edge[e] = w.face_normals[fs[0]].dot(w.face_normals[fs[1]]) < sharp_cosine;
+  }
+}
+
 /// Boundary vertices, isolated and non-manifold vertices (corners), and the
 /// ridge candidates among the others: the discrete normal longer than a fold
-/// at the feature angle makes it (user manual, classification).
+/// at the feature angle makes it (user manual, classification). A candidate
+/// counts only at the end of a feature edge (a sharp edge joins two; one
+/// without sharp edge stays smooth) unless `fix_unattached_candidates` fixes
+/// the others: the discrete normal, an SVD, is computed where it counts.
 inline void mark_fixed_and_candidates(const Flat_mesh& m, const Set_up_incidences& incidences,
                                       const Classification_options& opt, Vertex_classification& c,
                                       Classification_work& w) {
   const double candidate_length = 1. / std::cos(feature_normal_deviation(opt.feature_angle_degrees) / 2.);
+  auto counts = [&](std::size_t v) {
+    if (opt.fix_unattached_candidates) return true;
+    for (const Index* e = m.vertex_edges.first(v); e != m.vertex_edges.last(v); ++e)
+      if (c.feature_edge[*e]) return true;
+    return false;
+  };
   for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
     if (incidences.on_border[v])
       c.type[v] = ILSA_vertex_type::Boundary;
     else if (m.vertex_faces.size(v) == 0 || incidences.non_manifold[v])
       c.type[v] = ILSA_vertex_type::Corner;
-    else if (!opt.constrained_edges)
+    else if (!opt.constrained_edges && counts(v))
       w.ridge_candidate[v] = discrete_normal(m, w.face_normals, v).norm() > candidate_length;
   }
 }
 
-/// Feature edges (face normals more than the feature angle apart) and sharp
-/// edges (feature edges between two ridge candidates, paper §3, or the user's
-/// constrained edges); the feature edges that the crease contrast or the
-/// open-crease rule drops are neither.
-inline void mark_feature_and_sharp_edges(const Flat_mesh& m, const Set_up_incidences& incidences,
-                                         const Classification_options& opt, Vertex_classification& c,
-                                         Classification_work& w) {
-  const double sharp_cosine = feature_cosine(opt.feature_angle_degrees);
+/// Sharp edges: feature edges between two ridge candidates (paper §3), or the
+/// user's constrained edges; the feature edges that the crease contrast or
+/// the open-crease rule drops are neither.
+inline void mark_sharp_edges(const Flat_mesh& m, const Set_up_incidences& incidences, const Classification_options& opt,
+                             Vertex_classification& c, Classification_work& w) {
   for (std::size_t e = 0; e < m.edges.size(); ++e) {
-    if (opt.constrained_edges) {
-      w.sharp_edge[e] = (*opt.constrained_edges)[e];
-      continue;
-    }
+    // Such an edge is sharp (a crease edge) only between two ridge
+    // candidates; the others are still feature edges the safety check keeps.
     const auto& ends = m.edges[e];
-    const auto& fs = incidences.edge_faces[e];
-    if (fs[0] == npos || fs[1] == npos) continue;
-    // Dihedral angle below θ_f <=> face normals more than π − θ_f apart. Such
-    // an edge is sharp (a crease edge) only between two ridge candidates
-    // (paper §3); the others are still feature edges the safety check keeps.
-    c.feature_edge[e] = w.face_normals[fs[0]].dot(w.face_normals[fs[1]]) < sharp_cosine;
-    w.sharp_edge[e] = c.feature_edge[e] && w.ridge_candidate[ends[0]] && w.ridge_candidate[ends[1]];
+    w.sharp_edge[e] = opt.constrained_edges
+                          ? (*opt.constrained_edges)[e]
+                          : c.feature_edge[e] && w.ridge_candidate[ends[0]] && w.ridge_candidate[ends[1]];
   }
   if (!opt.constrained_edges && opt.crease_contrast > 0) {
     w.curved.assign(m.number_of_vertices(), 0);
@@ -280,8 +295,9 @@ inline Vertex_classification classify(const Flat_mesh& m, const Set_up_incidence
   w.sharp_edge.assign(ne, 0);
   compute_face_normals(m, m.points, w.face_normals);
 
+  mark_feature_edges(m, incidences, opt, c, w);
   mark_fixed_and_candidates(m, incidences, opt, c, w);
-  mark_feature_and_sharp_edges(m, incidences, opt, c, w);
+  mark_sharp_edges(m, incidences, opt, c, w);
   type_candidates(m, opt, w, c);
   if (opt.constrained_vertices)
     for (std::size_t v = 0; v < nv; ++v)
