@@ -354,7 +354,8 @@ void renumber_for_locality(const std::vector<Vec3>& raw, const std::vector<std::
 /// The edges of `tm` in a canonical order (by endpoint indices, lower index
 /// first, the face on the lower-to-higher halfedge first), whatever order the
 /// graph lists them in: meshes of different types with the same vertices and
-/// faces give bit-identical results. Sets the edges of `m`, the faces of each
+/// faces give bit-identical results (but where two edges join the same two
+/// vertices, which keep the graph's order). Sets the edges of `m`, the faces of each
 /// edge and the border vertices in `incidences`, the descriptors in `edge_list`.
 template <class TriangleMesh, class VertexIndices, class FaceIndices>
 void read_edges(const TriangleMesh& tm, const VertexIndices& vertex_index, const FaceIndices& face_index, Flat_mesh& m,
@@ -362,37 +363,31 @@ void read_edges(const TriangleMesh& tm, const VertexIndices& vertex_index, const
                 std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_list) {
   using GT = boost::graph_traits<TriangleMesh>;
   struct Edge_record {
-    Index a, b, f0, f1, descriptor;
+    Index a, b, f0, f1;
   };
   const std::vector<typename GT::edge_descriptor> graph_edges(edges(tm).begin(), edges(tm).end());
+  std::vector<Edge_record> records; // in the graph's order
   require_indexable(2 * graph_edges.size(), "edge ends");
-  // The halfedge from the lower index to the higher.
-  auto ascending = [&](const typename GT::edge_descriptor& e) {
-    const auto h = halfedge(e, tm);
-    return vertex_index(source(h, tm)) > vertex_index(target(h, tm)) ? opposite(h, tm) : h;
-  };
-  // Sorted by (a, b), then by the graph's order where two edges join the same
-  // two vertices, in linear time: placed by `a` (a counting sort), then each
-  // vertex's few sorted by `b`.
-  const std::size_t nv = m.number_of_vertices();
-  std::vector<Index> first(nv + 1, 0);
-  for (const auto& e : graph_edges) ++first[vertex_index(source(ascending(e), tm)) + 1];
-  for (std::size_t i = 0; i < nv; ++i) first[i + 1] += first[i];
-  std::vector<Edge_record> records(graph_edges.size());
-  for (std::size_t k = 0; k < graph_edges.size(); ++k) {
-    const auto h = ascending(graph_edges[k]);
+  records.reserve(graph_edges.size());
+  for (const auto& e : graph_edges) {
+    auto h = halfedge(e, tm);
+    if (vertex_index(source(h, tm)) > vertex_index(target(h, tm))) h = opposite(h, tm);
     const auto f0 = face(h, tm), f1 = face(opposite(h, tm), tm);
-    const std::size_t a = vertex_index(source(h, tm));
-    records[first[a]++] = {Index(a), Index(vertex_index(target(h, tm))),
-                           f0 == GT::null_face() ? npos : Index(face_index(f0)),
-                           f1 == GT::null_face() ? npos : Index(face_index(f1)), Index(k)};
+    records.push_back({Index(vertex_index(source(h, tm))), Index(vertex_index(target(h, tm))),
+                       f0 == GT::null_face() ? npos : Index(face_index(f0)),
+                       f1 == GT::null_face() ? npos : Index(face_index(f1))});
   }
-  for (std::size_t i = 0, begin = 0; i < nv; begin = first[i++])
-    std::sort(records.begin() + std::ptrdiff_t(begin), records.begin() + std::ptrdiff_t(first[i]),
-              [](const Edge_record& x, const Edge_record& y) {
-                return std::make_pair(x.b, x.descriptor) < std::make_pair(y.b, y.descriptor);
-              });
-  release(first);
+  // Sorted by (a, b), then by the graph's order where two edges join the same
+  // two vertices, in linear time as in build_vertex_adjacency(): bucketed by
+  // `a` (in the graph's order), then each vertex's few sorted by `b`.
+  Adjacency by_lower_end;
+  by_lower_end.assign(m.number_of_vertices(), [&](auto emit) {
+    for (std::size_t k = 0; k < records.size(); ++k) emit(records[k].a, k);
+  });
+  for (std::size_t v = 0; v < m.number_of_vertices(); ++v)
+    std::sort(by_lower_end.items.begin() + std::ptrdiff_t(by_lower_end.begin[v]),
+              by_lower_end.items.begin() + std::ptrdiff_t(by_lower_end.begin[v + 1]),
+              [&](Index x, Index y) { return std::make_pair(records[x].b, x) < std::make_pair(records[y].b, y); });
 
   incidences.on_border.assign(m.number_of_vertices(), 0);
   edge_list.clear();
@@ -400,11 +395,12 @@ void read_edges(const TriangleMesh& tm, const VertexIndices& vertex_index, const
   incidences.edge_faces.clear();
   incidences.edge_faces.reserve(records.size());
   edge_list.reserve(records.size());
-  for (const Edge_record& r : records) {
+  for (Index k : by_lower_end.items) {
+    const Edge_record& r = records[k];
     if (r.f0 == npos || r.f1 == npos) incidences.on_border[r.a] = incidences.on_border[r.b] = 1;
     m.edges.push_back({r.a, r.b});
     incidences.edge_faces.push_back({r.f0, r.f1});
-    edge_list.push_back(graph_edges[r.descriptor]);
+    edge_list.push_back(graph_edges[k]);
   }
 }
 
