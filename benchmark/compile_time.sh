@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # Compile time a user pays: a minimal program calling smooth_surface_mesh_ilsa()
 # on an Epick Surface_mesh against the same program calling CGAL's
-# tangential_relaxation(), same compiler and flags, alternating, median of N.
+# tangential_relaxation(), same compiler and flags, taking turns, median of N.
+# The package's program is compiled twice: header-only (the default), and with
+# CGAL_ILSA_COMPILED_CORE, where the core is compiled once for the whole
+# project, from src/ilsa_core.cpp (user manual, "Compiling the core once"),
+# which is timed too.
 #
 #   benchmark/compile_time.sh [N] [extra compiler flags...]
 #
@@ -27,16 +31,26 @@ time_of() { # sets `seconds` to the time one compilation takes; stops the script
   seconds=$(echo "$end - $start" | bc)
 }
 median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
-ilsa_times=() peer_times=()
+ilsa_times=() core_user_times=() core_times=() peer_times=()
 for ((i = 0; i < runs; ++i)); do
   time_of "${common[@]}" "${ilsa[@]}" "$here/benchmark/compile_time/ilsa_call.cpp"
   ilsa_times+=("$seconds")
+  time_of "${common[@]}" "${ilsa[@]}" -DCGAL_ILSA_COMPILED_CORE "$here/benchmark/compile_time/ilsa_call.cpp"
+  core_user_times+=("$seconds")
   time_of "${common[@]}" "$here/benchmark/compile_time/tangential_call.cpp"
   peer_times+=("$seconds")
+  time_of "${common[@]}" "${ilsa[@]}" -DCGAL_ILSA_COMPILED_CORE "$here/src/ilsa_core.cpp"
+  core_times+=("$seconds")
 done
-ilsa_median=$(printf '%s\n' "${ilsa_times[@]}" | median)
-peer_median=$(printf '%s\n' "${peer_times[@]}" | median)
-echo "smooth_surface_mesh_ilsa: ${ilsa_times[*]} s (median $ilsa_median)"
-echo "tangential_relaxation:    ${peer_times[*]} s (median $peer_median)"
-echo "ratio: $(echo "scale=2; $ilsa_median / $peer_median" | bc)"
+median_of() { printf '%s\n' "$@" | median; }
+ilsa_median=$(median_of "${ilsa_times[@]}")
+core_user_median=$(median_of "${core_user_times[@]}")
+peer_median=$(median_of "${peer_times[@]}")
+core_median=$(median_of "${core_times[@]}")
+echo "smooth_surface_mesh_ilsa, header-only:        ${ilsa_times[*]} s (median $ilsa_median)"
+echo "smooth_surface_mesh_ilsa, core compiled once: ${core_user_times[*]} s (median $core_user_median)"
+echo "tangential_relaxation:                        ${peer_times[*]} s (median $peer_median)"
+echo "src/ilsa_core.cpp, once per project:          ${core_times[*]} s (median $core_median)"
+echo "ratio, header-only:        $(echo "scale=2; $ilsa_median / $peer_median" | bc)"
+echo "ratio, core compiled once: $(echo "scale=2; $core_user_median / $peer_median" | bc)"
 rm -rf "$out"

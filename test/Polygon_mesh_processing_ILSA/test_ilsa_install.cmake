@@ -2,7 +2,8 @@
 #  MODE=install: `cmake --install` into a fresh prefix installs nothing that
 #    would replace a file of CGAL's installation; a consumer project finds the
 #    package with find_package(), builds, and smooths INPUT bit-identically to
-#    the ilsa_smooth TOOL.
+#    the ilsa_smooth TOOL, both header-only and with the package's core
+#    compiled once (CGAL::Polygon_mesh_processing_ILSA_core).
 #  MODE=subdirectory: a parent project adds the source tree with
 #    add_subdirectory() (see parent/CMakeLists.txt, which checks its settings);
 #    the compile command of its program carries no warning flag of the package.
@@ -57,10 +58,12 @@ if(MODE STREQUAL "install")
       "-DCMAKE_PREFIX_PATH=${prefix}" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_COMPILER=${CXX}" "-DCGAL_DIR=${CGAL_DIR}")
   expect_cgal("${WORK}/consumer")
   run("building the consumer" "${CMAKE_COMMAND}" --build "${WORK}/consumer")
-  run("the consumer" "${WORK}/consumer/ilsa_consumer" "${INPUT}" "${WORK}/consumer.off")
   run("ilsa_smooth" "${TOOL}" "${INPUT}" "${WORK}/tool.off")
-  run("comparing" "${CMAKE_COMMAND}" -E compare_files "${WORK}/consumer.off" "${WORK}/tool.off")
-  message(STATUS "the consumer's output equals ilsa_smooth's")
+  foreach(consumer ilsa_consumer ilsa_consumer_compiled_core)
+    run("${consumer}" "${WORK}/consumer/${consumer}" "${INPUT}" "${WORK}/${consumer}.off")
+    run("comparing" "${CMAKE_COMMAND}" -E compare_files "${WORK}/${consumer}.off" "${WORK}/tool.off")
+    message(STATUS "the output of ${consumer} equals ilsa_smooth's")
+  endforeach()
 elseif(MODE STREQUAL "subdirectory")
   run("configuring the parent" "${CMAKE_COMMAND}" -S "${here}/parent" -B "${WORK}/parent" "-DILSA_SOURCE_DIR=${SOURCE}"
       -DCMAKE_EXPORT_COMPILE_COMMANDS=ON "-DCMAKE_CXX_COMPILER=${CXX}" "-DCGAL_DIR=${CGAL_DIR}")

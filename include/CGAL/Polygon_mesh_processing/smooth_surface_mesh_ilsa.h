@@ -12,10 +12,12 @@
 
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/global_loop.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/set_up.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/smoothing_parameters.h>
+#ifndef CGAL_ILSA_COMPILED_CORE
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/global_loop.h> // smooth_flat_copy()
+#endif
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -305,6 +307,7 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
                                          const NamedParameters& np = parameters::default_values()) {
   namespace ilsa = internal::ILSA;
   // 1. Read and check the named parameters (the defaults: internal/ILSA/defaults.h).
+  ilsa::check_concurrency_tag<ConcurrencyTag>();
   const ilsa::Smoothing_parameters smoothing = ilsa::read_smoothing_parameters(np);
   using VPM = typename GetVertexPointMap<TriangleMesh, NamedParameters>::type;
   VPM vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
@@ -328,15 +331,11 @@ ILSA_statistics smooth_surface_mesh_ilsa(const VertexRange& vertices, TriangleMe
   if (neighborhoods.adjustable.empty() || smoothing.iterations == 0) return stats;
 
   // 3. Iterate (the paper's Algo. 1).
-  ilsa::Global_loop<ConcurrencyTag> loop(input.mesh, input.classification, neighborhoods, smoothing, incidences);
-  incidences = ilsa::Set_up_incidences();
-  if (smoothing.verbose)
-    std::cerr << "ILSA set-up: " << copy_seconds << " s flat copy and classification, " << timer.time() - copy_seconds
-              << " s projection trees, clearances and safety check\n";
-  loop.run(stats);
+  const std::vector<ilsa::Vec3> smoothed = ilsa::smooth_flat_copy<ilsa::Core_tag<ConcurrencyTag>>(
+      input.mesh, input.classification, neighborhoods, smoothing, incidences, copy_seconds, stats);
 
   // 4. Write T_new back.
-  ilsa::write_back(input.mesh, loop.positions(), neighborhoods.adjustable, input.vertices, vpm);
+  ilsa::write_back(input.mesh, smoothed, neighborhoods.adjustable, input.vertices, vpm);
   return stats;
 }
 

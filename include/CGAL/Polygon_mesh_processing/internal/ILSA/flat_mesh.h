@@ -19,7 +19,8 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry> // cross()
 
 #include <algorithm>
 #include <array>
@@ -470,6 +471,19 @@ Flat_mesh build_flat_mesh(const TriangleMesh& tm, const VertexPointMap& vpm,
   build_vertex_adjacency(m);
   mark_non_manifold(tm, vertex_list, m, incidences);
   return m;
+}
+
+/// Writes T_new back to `tm`: the adjustable vertices that moved, in the
+/// input's coordinates; fixed and unmoved vertices are not touched.
+template <class VertexDescriptor, class VertexPointMap>
+void write_back(const Flat_mesh& original, const std::vector<Vec3>& pos, const std::vector<Index>& adjustable,
+                const std::vector<VertexDescriptor>& vertex_list, VertexPointMap vpm) {
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  for (std::size_t v : adjustable) {
+    if (pos[v] == original.points[v]) continue;
+    const Vec3 p = original.to_input(pos[v]);
+    put(vpm, vertex_list[v], Point(p.x(), p.y(), p.z()));
+  }
 }
 
 } // namespace ILSA

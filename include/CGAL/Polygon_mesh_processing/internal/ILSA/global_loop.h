@@ -11,6 +11,7 @@
 
 #include <CGAL/Polygon_mesh_processing/triangle_quality_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/move_safety.h>
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <iostream>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -94,8 +96,8 @@ public:
     }
   }
 
-  /// T_new, in the normalised coordinates of the flat copy.
-  const std::vector<Vec3>& positions() const { return pos_; }
+  /// T_new, in the normalised coordinates of the flat copy, moved out of the loop.
+  std::vector<Vec3> take_positions() { return std::move(pos_); }
 
 private:
   // The floor the safety check applies: 1 in the quality-monotone mode;
@@ -243,17 +245,20 @@ private:
   std::vector<float> settled_;
 };
 
-/// Writes T_new back to `tm`: the adjustable vertices that moved, in the
-/// input's coordinates; fixed and unmoved vertices are not touched.
-template <class VertexDescriptor, class VertexPointMap>
-void write_back(const Flat_mesh& original, const std::vector<Vec3>& pos, const std::vector<Index>& adjustable,
-                const std::vector<VertexDescriptor>& vertex_list, VertexPointMap vpm) {
-  using Point = typename boost::property_traits<VertexPointMap>::value_type;
-  for (std::size_t v : adjustable) {
-    if (pos[v] == original.points[v]) continue;
-    const Vec3 p = original.to_input(pos[v]);
-    put(vpm, vertex_list[v], Point(p.x(), p.y(), p.z()));
-  }
+// Declared in core.h, with what it does.
+template <class ConcurrencyTag>
+std::vector<Vec3> smooth_flat_copy(const Flat_mesh& original, const Vertex_classification& classification,
+                                   const ILSA_neighborhoods& neighborhoods, const Smoothing_parameters& parameters,
+                                   Set_up_incidences& incidences, double copy_seconds, ILSA_statistics& stats) {
+  CGAL::Real_timer timer; // for `verbose` (user manual, "Performance")
+  timer.start();
+  Global_loop<ConcurrencyTag> loop(original, classification, neighborhoods, parameters, incidences);
+  incidences = Set_up_incidences();
+  if (parameters.verbose)
+    std::cerr << "ILSA set-up: " << copy_seconds << " s flat copy and classification, " << timer.time()
+              << " s projection trees, clearances and safety check\n";
+  loop.run(stats);
+  return loop.take_positions();
 }
 
 } // namespace ILSA

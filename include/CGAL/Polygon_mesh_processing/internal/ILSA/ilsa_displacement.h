@@ -8,6 +8,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_ILSA_DISPLACEMENT_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_ILSA_DISPLACEMENT_H
 
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/jacobi_sweeps.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
@@ -20,48 +21,6 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
-
-/// Which vertices move and which neighbours drive them (paper's Algo. 2): all one-ring
-/// vertices for a smooth node, only its two attached-sharp nodes for a ridge node.
-struct ILSA_neighborhoods {
-  const Flat_mesh* mesh = nullptr;
-  const Vertex_classification* classification = nullptr;
-  std::vector<Index> adjustable; // smooth and ridge vertices allowed to move
-  std::vector<Index> smooth;     // the smooth ones among them (Algo. 3)
-
-  /// Calls `f(w, e)` for each neighbour `w` driving the adjustable vertex `v`
-  /// and the edge `e` between them, in the order of the one ring.
-  template <class F> void for_each_neighbor(std::size_t v, F f) const {
-    const Vertex_classification& c = *classification;
-    if (c.type[v] == ILSA_vertex_type::Ridge) {
-      for (std::size_t e : c.attached_edges[v]) {
-        const auto& ends = mesh->edges[e];
-        f(std::size_t(ends[0] == v ? ends[1] : ends[0]), e); // its attached-sharp node
-      }
-      return;
-    }
-    const Index* e = mesh->vertex_edges.first(v);
-    for (const Index* w = mesh->vertex_neighbors.first(v); w != mesh->vertex_neighbors.last(v); ++w, ++e)
-      f(std::size_t(*w), std::size_t(*e));
-  }
-};
-
-/// `movable[v]` is false for the vertices outside the user's range. `m` and
-/// `c` must outlive the result: it keeps pointers.
-inline ILSA_neighborhoods make_neighborhoods(const Flat_mesh& m, const Vertex_classification& c,
-                                             const std::vector<unsigned char>& movable) {
-  ILSA_neighborhoods nb;
-  nb.mesh = &m;
-  nb.classification = &c;
-  for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
-    if (c.is_fixed(v) || !movable[v]) continue;
-    nb.adjustable.push_back(Index(v));
-    if (c.type[v] != ILSA_vertex_type::Ridge) nb.smooth.push_back(Index(v));
-  }
-  nb.adjustable.shrink_to_fit();
-  nb.smooth.shrink_to_fit();
-  return nb;
-}
 
 /// Buffers reused across iterations, so the sweeps do not allocate.
 struct ILSA_workspace {

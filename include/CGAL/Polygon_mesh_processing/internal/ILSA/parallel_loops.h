@@ -13,6 +13,8 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PARALLEL_LOOPS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PARALLEL_LOOPS_H
 
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h> // is_parallel
+
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>
 
@@ -33,15 +35,6 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
-
-template <class ConcurrencyTag>
-constexpr bool is_parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
-
-template <class ConcurrencyTag> constexpr void check_concurrency_tag() {
-#ifndef CGAL_LINKED_WITH_TBB
-  static_assert(!is_parallel<ConcurrencyTag>, "Parallel_tag is enabled but TBB is unavailable.");
-#endif
-}
 
 /// Loops of at most this many iterations run on the calling thread: handing
 /// them to TBB costs more than they take.

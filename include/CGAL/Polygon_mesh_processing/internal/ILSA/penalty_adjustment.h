@@ -10,6 +10,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PENALTY_ADJUSTMENT_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PENALTY_ADJUSTMENT_H
 
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
@@ -26,16 +27,6 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
-
-// The package's defaults; smooth_surface_mesh_ilsa() sets every member from its named parameters.
-struct Penalty_parameters {
-  double relax2 = defaults::penalty_relaxation;
-  double mu = defaults::penalty_mu;
-  double length_weight = defaults::length_weight; // wl
-  double area_weight = defaults::area_weight;     // wa
-  std::size_t sweeps = defaults::penalty_steps;
-  double tolerance = 0; // stop once no displacement changes by more
-};
 
 /// Plane of the soft constraint c(x) = 0 (user manual, "Plane constraint units"), as `a · (x − v) = k` with
 /// unit `a`. With no displacement yet it is the tangent plane at `v`, whose

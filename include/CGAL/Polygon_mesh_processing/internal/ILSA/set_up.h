@@ -9,9 +9,12 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_SET_UP_H
 
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
+#ifndef CGAL_ILSA_COMPILED_CORE
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h> // classify()
+#endif
 
 #include <CGAL/Named_function_parameters.h>
 #ifndef CGAL_ILSA_NAMED_PARAMETERS_INTERFACE

@@ -11,7 +11,7 @@
 
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/penalty_adjustment.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -24,31 +24,6 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
-
-struct Smoothing_parameters {
-  std::size_t iterations = defaults::number_of_iterations;   // the paper's max_global_iter_num
-  std::size_t sweeps = defaults::number_of_relaxation_steps; // of the ILSA step (Algo. 2)
-  double relax1 = defaults::relaxation;
-  Penalty_parameters penalty; // relax2, μ, wl, wa and the sweeps of the penalty step (Algo. 3)
-  bool tangential = defaults::tangential_displacement;
-  bool do_project = defaults::do_project;
-  bool use_safety = defaults::use_safety_constraints;
-  // The quality floor; without an explicit one, raised to the input's
-  // minimum aspect ratio when that is higher.
-  double quality_floor = defaults::quality_floor;
-  bool raise_floor_to_input_minimum = true;
-  bool quality_monotone = defaults::quality_monotone;
-  bool reject_worsening = defaults::reject_worsening_moves;
-  double fidelity_tolerance = defaults::fidelity_tolerance;
-  double minimum_gain = defaults::minimum_quality_gain;
-  double minimum_remaining_gain = defaults::minimum_remaining_gain;
-  double retry_distance = defaults::retry_distance;
-  bool verbose = false;
-  std::function<bool(double)> callback;
-
-  /// Whether the run may stop before `iterations` (user manual, "Stopping early").
-  bool may_stop() const { return minimum_gain > 0 || minimum_remaining_gain > 0; }
-};
 
 /// Reads the smoothing parameters of `np`; throws `ILSA_error` for a value out of range.
 template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(const NamedParameters& np) {

@@ -8,6 +8,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_VERTEX_CLASSIFICATION_H
 
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/feature_lines.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
@@ -53,39 +54,6 @@ void compute_face_normals(const Flat_mesh& m, const std::vector<Vec3>& pos, std:
   normals.resize(m.number_of_faces());
   parallel_for<ConcurrencyTag>(m.number_of_faces(), [&](std::size_t f) { normals[f] = unit_normal(pos, m.faces[f]); });
 }
-
-/// What the classification stage hands to the smoothing stages (read for the
-/// whole call; the intermediate results stay inside classify()).
-struct Vertex_classification {
-  std::vector<ILSA_vertex_type> type;
-  std::vector<Index> crease_of_edge;                // crease polyline of a sharp edge, npos for the other edges
-  std::vector<unsigned char> feature_edge;          // sharp, or (without the user's edge map) dihedral angle below θ_f
-                                                    // and, with a crease contrast, kept by it
-  std::vector<std::array<Index, 2>> attached_edges; // a ridge vertex's two sharp edges
-  std::size_t number_of_kinks = 0;                  // vertices with two sharp edges fixed as kinks
-
-  bool is_fixed(std::size_t v) const {
-    return type[v] == ILSA_vertex_type::Corner || type[v] == ILSA_vertex_type::Boundary;
-  }
-  bool is_sharp(std::size_t e) const { return crease_of_edge[e] != npos; }
-};
-
-struct Classification_options {
-  // Angle between face normals above which an edge is sharp (CGAL's convention; the paper's θ_f is 180° minus it).
-  double feature_angle_degrees = defaults::feature_angle;
-  // Candidate without sharp edge: a corner (paper) or smooth.
-  bool fix_unattached_candidates = defaults::fix_unattached_candidates;
-  // A crease turning by more than this at a vertex makes it a corner (by default the feature angle).
-  double kink_angle_degrees = defaults::feature_angle;
-  // A feature edge between candidates is sharp only if its angle is at least this times the angle of the flatter
-  // of the two other edges of each of its faces (user manual, "Crease contrast"); 0: every one is (the paper).
-  double crease_contrast = defaults::crease_contrast;
-  // An open set of connected feature edges with fewer edges is curvature (user manual, "Open Crease Lines");
-  // 0: none is dropped (the paper).
-  std::size_t minimum_open_crease_edges = defaults::minimum_open_crease_edges;
-  const std::vector<unsigned char>* constrained_vertices = nullptr; // user's vertex_is_constrained_map
-  const std::vector<unsigned char>* constrained_edges = nullptr;    // user's edge_is_constrained_map
-};
 
 /// The crease contrast (user manual, "Crease contrast"): keeps a feature edge
 /// (and a sharp edge) only if keeps_crease_contrast() says so. A feature edge
@@ -282,8 +250,8 @@ inline void chain_creases(const Flat_mesh& m, const Classification_work& w, Vert
 
 /// Classifies the vertices of `m` (paper §3), user constraints overriding.
 /// `incidences`: those of `m` (read here only).
-inline Vertex_classification classify(const Flat_mesh& m, const Set_up_incidences& incidences,
-                                      const Classification_options& opt) {
+CGAL_ILSA_CORE_INLINE Vertex_classification classify(const Flat_mesh& m, const Set_up_incidences& incidences,
+                                                     const Classification_options& opt) {
   const std::size_t nv = m.number_of_vertices(), ne = m.edges.size();
   Vertex_classification c;
   c.type.assign(nv, ILSA_vertex_type::Smooth);
