@@ -365,9 +365,11 @@ auto smoothing_parameters(const Options& o, const std::function<bool(double)>& c
 }
 
 // The library checks its parameters before it reads the mesh: an empty mesh
-// tests the flags' values before the input is read and anything printed.
-void check_parameters(const Options& o) {
+// tests the flags' values before the input is read and anything printed
+// (without --verbose, which would print the empty mesh's vertex types).
+void check_parameters(Options o) {
   Mesh empty;
+  o.verbose = false;
   const auto np = smoothing_parameters(o, std::function<bool(double)>());
   try {
     if (o.quality_floor)

@@ -119,6 +119,9 @@ endforeach()
 expect_success("--progress" err "^\rILSA iteration 1 of at most 2\rILSA iteration 2 of at most 2\n$"
                "${DATA}/sphere_low.off" --iterations 2 --min-gain 0 --min-remaining-gain 0 --progress)
 expect_success("--no-progress" err "^$" "${DATA}/sphere_low.off" --iterations 2 --no-progress)
+# --verbose: the vertex types of the input first (not of the parameter check before it is read), then the set-up.
+expect_success("--verbose" err "^ILSA: [1-9][0-9]* smooth, [0-9]+ ridge, [0-9]+ corner, [0-9]+ boundary vertices\nILSA set-up: "
+               "${DATA}/sphere_low.off" --iterations 1 --verbose)
 # --help lists the formats, then --version; --version prints the project's version.
 expect_success("--help" out "\\.off \\.obj \\.ply \\.stl.*--version" --help)
 expect_success("--version" out "^ilsa_smooth ${VERSION} \\(CGAL [0-9.]+\\)\n$" --version)
