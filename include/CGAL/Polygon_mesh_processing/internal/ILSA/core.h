@@ -27,10 +27,15 @@
 #include <vector>
 
 // `inline` where the core is header-only; nothing where it is compiled once.
+// The two ways give the core's functions different names (an inline
+// namespace), so that a program may mix files compiled both ways: each file
+// calls its own way's functions, and no function has two definitions.
 #ifdef CGAL_ILSA_COMPILED_CORE
 #define CGAL_ILSA_CORE_INLINE
+#define CGAL_ILSA_CORE_NAMESPACE compiled_core
 #else
 #define CGAL_ILSA_CORE_INLINE inline
+#define CGAL_ILSA_CORE_NAMESPACE header_only_core
 #endif
 
 namespace CGAL {
@@ -163,6 +168,8 @@ template <class ConcurrencyTag> constexpr void check_concurrency_tag() {
 template <class ConcurrencyTag>
 using Core_tag = std::conditional_t<is_parallel<ConcurrencyTag>, CGAL::Parallel_tag, CGAL::Sequential_tag>;
 
+inline namespace CGAL_ILSA_CORE_NAMESPACE {
+
 /// Stage 1 (paper §3): the vertex types, sharp edges and crease lines of `m`
 /// (vertex_classification.h).
 CGAL_ILSA_CORE_INLINE Vertex_classification classify(const Flat_mesh& m, const Set_up_incidences& incidences,
@@ -177,6 +184,8 @@ template <class ConcurrencyTag>
 std::vector<Vec3> smooth_flat_copy(const Flat_mesh& original, const Vertex_classification& classification,
                                    const ILSA_neighborhoods& neighborhoods, const Smoothing_parameters& parameters,
                                    Set_up_incidences& incidences, double copy_seconds, ILSA_statistics& stats);
+
+} // namespace CGAL_ILSA_CORE_NAMESPACE
 
 } // namespace ILSA
 } // namespace internal

@@ -245,7 +245,8 @@ private:
   std::vector<float> settled_;
 };
 
-// Declared in core.h, with what it does.
+inline namespace CGAL_ILSA_CORE_NAMESPACE { // declared in core.h, with what it does
+
 template <class ConcurrencyTag>
 std::vector<Vec3> smooth_flat_copy(const Flat_mesh& original, const Vertex_classification& classification,
                                    const ILSA_neighborhoods& neighborhoods, const Smoothing_parameters& parameters,
@@ -260,6 +261,8 @@ std::vector<Vec3> smooth_flat_copy(const Flat_mesh& original, const Vertex_class
   loop.run(stats);
   return loop.take_positions();
 }
+
+} // namespace CGAL_ILSA_CORE_NAMESPACE
 
 } // namespace ILSA
 } // namespace internal

@@ -248,6 +248,8 @@ inline void chain_creases(const Flat_mesh& m, const Classification_work& w, Vert
     if (w.sharp_edge[e]) c.crease_of_edge[e] = find(e);
 }
 
+inline namespace CGAL_ILSA_CORE_NAMESPACE { // core.h
+
 /// Classifies the vertices of `m` (paper §3), user constraints overriding.
 /// `incidences`: those of `m` (read here only).
 CGAL_ILSA_CORE_INLINE Vertex_classification classify(const Flat_mesh& m, const Set_up_incidences& incidences,
@@ -276,6 +278,8 @@ CGAL_ILSA_CORE_INLINE Vertex_classification classify(const Flat_mesh& m, const S
   chain_creases(m, w, c);
   return c;
 }
+
+} // namespace CGAL_ILSA_CORE_NAMESPACE
 
 } // namespace ILSA
 } // namespace internal
