@@ -3,6 +3,7 @@
 //
 //   ilsa_benchmark [--runs N] [--peer-iterations N] [MESH ...]
 //   ilsa_benchmark --scaling N
+//   ilsa_benchmark --write-scaling-mesh N FILE
 //   ilsa_benchmark --pareto [--peer-iterations N] [MESH ...]
 //   ilsa_benchmark --phases [--runs N] [--peer-iterations N] [MESH ...]
 //   ilsa_benchmark --crease-sets [MESH ...]
@@ -19,6 +20,9 @@
 // to N times and perturbed, time per face and peak memory of ILSA and CGAL
 // tangential relaxation, each run once in a child process of its own; then
 // the horse again with its vertices and faces in a random order.
+// --write-scaling-mesh N FILE writes the mesh of the scaling table's row N
+// (the horse Loop-subdivided N times and perturbed), e.g. to profile ILSA on it
+// with ilsa_smooth.
 // --pareto prints instead the comparison at the same distance (user manual,
 // "What Limits the Smoothing"): CGAL tangential relaxation (unconstrained,
 // N iterations) and its Hausdorff distance H to the input; then ILSA with its
@@ -391,7 +395,9 @@ int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--child") return run_child(argv[2], argv[3]);
   int runs = 5;
   unsigned peer_iterations = 10;
-  int scaling = -1; // --scaling N: the scaling table up to N subdivisions, and nothing else
+  int scaling = -1;     // --scaling N: the scaling table up to N subdivisions, and nothing else
+  int write_level = -1; // --write-scaling-mesh N FILE
+  std::string write_file;
   bool pareto = false, phases = false, crease_sets = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
@@ -400,7 +406,10 @@ int main(int argc, char** argv) {
       runs = std::max(1, std::atoi(argv[++i]));
     else if (a == "--scaling" && i + 1 < argc)
       scaling = std::max(0, std::atoi(argv[++i]));
-    else if (a == "--pareto")
+    else if (a == "--write-scaling-mesh" && i + 2 < argc) {
+      write_level = std::max(0, std::atoi(argv[++i]));
+      write_file = argv[++i];
+    } else if (a == "--pareto")
       pareto = true;
     else if (a == "--phases")
       phases = true;
@@ -414,6 +423,10 @@ int main(int argc, char** argv) {
   if (scaling >= 0) {
     run_scaling(argv[0], unsigned(scaling));
     return 0;
+  }
+  if (write_level >= 0) {
+    const Mesh mesh = subdivided_horse(unsigned(write_level));
+    return CGAL::IO::write_polygon_mesh(write_file, mesh, CGAL::parameters::use_binary_mode(true)) ? 0 : 1;
   }
   if (files.empty()) files = default_meshes();
   if (pareto) {

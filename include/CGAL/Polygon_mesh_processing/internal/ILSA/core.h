@@ -4,12 +4,12 @@
 // The core of ILSA and what it is handed: the classification of the flat copy
 // (stage 1, paper §3) and the iterations (Algo. 1 to 3, projection, safety
 // check). The core reads the flat copy only, never the user's mesh type, so it
-// can be compiled once (user manual, "Compiling the core once"): with
-// CGAL_ILSA_COMPILED_CORE defined, this header only declares classify() and
-// smooth_flat_copy(), and src/ilsa_core.cpp defines them (for
-// CGAL::Sequential_tag, and CGAL::Parallel_tag with TBB). Without it, the
-// package is header-only and the public headers include the definitions
-// (vertex_classification.h, global_loop.h).
+// can be compiled once (user manual, "Compiling the core once"). This header
+// declares its two functions, classify() and smooth_flat_copy(). Header-only
+// (the default), the public headers include their definitions
+// (vertex_classification.h, global_loop.h); with CGAL_ILSA_COMPILED_CORE
+// defined, they do not, and src/ilsa_core.cpp defines them (for
+// CGAL::Sequential_tag, and CGAL::Parallel_tag with TBB).
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_CORE_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_CORE_H

@@ -11,7 +11,6 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/jacobi_sweeps.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
 #include <algorithm>
 #include <utility>
