@@ -100,11 +100,15 @@ public:
     changed_round_.assign(m_.number_of_vertices(), 0);
     ring_changed_.assign(m_.number_of_vertices(), 0);
     vertex_now_.assign(m_.number_of_vertices(), 0.);
-    vertex_witness_.assign(m_.number_of_vertices(), npos);
+    vertex_witness_.assign(m_.number_of_vertices(), no_witness);
     travel_.assign(m_.number_of_vertices(), 0.f);
     face_travel_.assign(m_.number_of_faces(), {0.f, 0.f, 0.f});
     face_witness_.resize(m_.number_of_faces());
-    for (Index f = 0; f < m_.number_of_faces(); ++f) face_witness_[f] = {f, f, f, f};
+    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) { // the face itself, among the faces of its first vertex
+      const Index* first = m_.vertex_faces.first(m_.faces[f][0]);
+      const Witness w = witness_of(std::size_t(std::find(first, m_.vertex_faces.last(m_.faces[f][0]), f) - first));
+      face_witness_[f] = {w, w, w, w};
+    }
     tries_.assign(m_.number_of_vertices(), 0);
     queued_.assign(m_.number_of_vertices(), 0);
     dropped_in_.assign(m_.number_of_vertices(), 0);
@@ -216,6 +220,16 @@ public:
   }
 
 private:
+  // A witness of squared_distance_near(): the position of a face in the order
+  // in which it scans the faces around a point, or no_witness. One byte per
+  // point measured, not a face index (4 bytes per face instead of 16: the largest
+  // meshes are at the memory bound of the user manual's "Performance"); a face
+  // at position 255 or later is not remembered, and the next scan of the point
+  // starts from the beginning (with the same result).
+  using Witness = unsigned char;
+  static constexpr Witness no_witness = 255;
+  static Witness witness_of(std::size_t position) { return Witness((std::min)(position, std::size_t(no_witness))); }
+
   // --- The round protocol of enforce() -------------------------------------
 
   // Starts a call: the moved vertices and their travel, and the stamps'
@@ -503,7 +517,7 @@ private:
     auto cuts = [&](std::size_t w) {
       const double now = vertex_now_[w];
       if (!(now > fidelity_tolerance_)) return false;
-      Index witness = vertex_witness_[w];
+      Witness witness = vertex_witness_[w];
       return now > vertex_deviation(previous, w, witness);
     };
     if (cuts(v)) return true;
@@ -512,7 +526,7 @@ private:
     for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
       const double now = face_now_[*f];
       if (!(now > fidelity_tolerance_)) continue;
-      std::array<Index, 4> witnesses = face_witness_[*f];
+      std::array<Witness, 4> witnesses = face_witness_[*f];
       if (now > face_deviation(previous, *f, witnesses)) return true;
     }
     return false;
@@ -626,7 +640,7 @@ private:
   // Largest distance from the centroid and the edge midpoints of face `f` at
   // `pos` to the input surface around the face's vertices. `witnesses`: for
   // each of these points, the face looked at first (see squared_distance_near()).
-  double face_deviation(const std::vector<Vec3>& pos, std::size_t f, std::array<Index, 4>& witnesses) const {
+  double face_deviation(const std::vector<Vec3>& pos, std::size_t f, std::array<Witness, 4>& witnesses) const {
     const auto& t = m_.faces[f];
     const Vec3 &a = pos[t[0]], &b = pos[t[1]], &c = pos[t[2]];
     const std::array<Vec3, 4> points{Vec3((a + b + c) / 3.), Vec3((a + b) / 2.), Vec3((b + c) / 2.),
@@ -639,7 +653,7 @@ private:
 
   // Distance from the input position of `w` to the surface around `w` at `pos`;
   // `witness` as in squared_distance_near().
-  double vertex_deviation(const std::vector<Vec3>& pos, std::size_t w, Index& witness) const {
+  double vertex_deviation(const std::vector<Vec3>& pos, std::size_t w, Witness& witness) const {
     return std::sqrt(squared_distance_near(m_.points[w], pos, std::array<std::size_t, 1>{w}, witness));
   }
 
@@ -649,19 +663,21 @@ private:
   // faces (an upper bound of the distance to the surface); within it the scan
   // stops at the first face in reach, so the value depends on the scan order,
   // and callers only compare it with the tolerance: the result of the check
-  // does not depend on the order. `witness`, a face of these (or npos), is
-  // looked at first, and is set to the face found in reach: the one that was
-  // in reach at the last call for the same point is most often in reach again,
-  // vertices move little between two calls, so most scans look at one face.
+  // does not depend on the order. `witness`, the position of one of these
+  // faces in the scan (see Witness), is looked at first, and is set to the
+  // face found in reach: the one that was in reach at the last call for the
+  // same point is most often in reach again, vertices move little between two
+  // calls, so most scans look at one face.
   // At the input positions, a face whose bounding ball lies farther from `x`
   // than the best distance so far can neither lower it nor be in reach: its
   // distance is not computed (the result is the same).
   template <class I, std::size_t N>
   double squared_distance_near(const Vec3& x, const std::vector<Vec3>& pos, const std::array<I, N>& around,
-                               Index& witness) const {
+                               Witness& witness) const {
     const double tolerance2 = fidelity_tolerance_ * fidelity_tolerance_;
     const bool input = &pos == &m_.points;
-    const std::size_t first = witness;
+    const std::size_t first = face_in_scan(around, witness);
+    std::size_t position = witness; // in the scan, of the face looked at
     double best = std::numeric_limits<double>::infinity(), reach = best;
     auto in_reach = [&](std::size_t f) {
       if (input && best != std::numeric_limits<double>::infinity() && !projector_.ball_within(x, f, reach))
@@ -670,12 +686,13 @@ private:
       const double d = squared_distance_to_triangle(x, pos[t[0]], pos[t[1]], pos[t[2]]);
       if (d < best) best = d, reach = std::sqrt(best) + Projector::ball_slack;
       if (best > tolerance2) return false;
-      witness = Index(f);
+      witness = witness_of(position);
       return true;
     };
     if (first != npos && in_reach(first)) return best;
+    position = 0;
     auto scan = [&](std::size_t u) {
-      for (const Index* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f)
+      for (const Index* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f, ++position)
         if (*f != first && in_reach(*f)) return true;
       return false;
     };
@@ -685,6 +702,25 @@ private:
       for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
         if (scan(*w)) return best;
     return best;
+  }
+
+  // The face at `position` in the scan of squared_distance_near() around
+  // `around`, npos for no_witness.
+  template <class I, std::size_t N> std::size_t face_in_scan(const std::array<I, N>& around, Witness position) const {
+    if (position == no_witness) return npos;
+    std::size_t k = position;
+    auto within = [&](std::size_t u) {
+      const std::size_t n = m_.vertex_faces.size(u);
+      if (k < n) return true;
+      k -= n;
+      return false;
+    };
+    for (std::size_t u : around)
+      if (within(u)) return m_.vertex_faces.first(u)[k];
+    for (std::size_t u : around)
+      for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
+        if (within(*w)) return m_.vertex_faces.first(*w)[k];
+    return npos;
   }
 
   struct Star_quality {
@@ -728,25 +764,25 @@ private:
   double fidelity_tolerance_;
   bool reject_worsening_;
   std::size_t halvings_;
-  std::vector<Index> degenerate_faces_;            // faces degenerate in the input, in increasing order
-  std::vector<Vec3> degenerate_references_;        // their reference orientations
-  std::vector<unsigned char> offends_;             // per face, in the current round
-  std::vector<unsigned char> bad_;                 // per vertex: its move offends, in the current round
-  std::vector<unsigned char> failed_test_;         // per vertex: the Test its move failed last
-  std::vector<unsigned char> tries_;               // halvings applied to a vertex's move (at most halvings_ + 1)
-  std::vector<unsigned char> checked_;             // per vertex: already in the next list to check
-  std::vector<unsigned char> queued_;              // per vertex: in the list for the fidelity tests
-  Claim_stamps face_round_;                        // round in which a face's offending flag was computed
-  Claim_stamps deviation_round_, vertex_round_;    // round in which the deviations below were computed
-  Claim_stamps changed_round_;                     // last round in which a vertex's move changed
-  Claim_stamps ring_changed_;                      // the same, for any vertex up to two edges away
-  std::vector<double> face_now_, vertex_now_;      // face_deviation (see face_within_tolerance()) and
-                                                   // vertex_deviation at `next`
-  std::vector<Index> vertex_witness_;              // face first looked at by vertex_deviation
-  std::vector<std::array<Index, 4>> face_witness_; // the same, for each point of face_deviation
-  std::vector<float> travel_;                      // per vertex: length of the path of its position at `next`
-                                                   // (at least: each step is added rounded up)
-  std::vector<std::array<float, 3>> face_travel_;  // travel_ of the face's vertices then
+  std::vector<Index> degenerate_faces_;              // faces degenerate in the input, in increasing order
+  std::vector<Vec3> degenerate_references_;          // their reference orientations
+  std::vector<unsigned char> offends_;               // per face, in the current round
+  std::vector<unsigned char> bad_;                   // per vertex: its move offends, in the current round
+  std::vector<unsigned char> failed_test_;           // per vertex: the Test its move failed last
+  std::vector<unsigned char> tries_;                 // halvings applied to a vertex's move (at most halvings_ + 1)
+  std::vector<unsigned char> checked_;               // per vertex: already in the next list to check
+  std::vector<unsigned char> queued_;                // per vertex: in the list for the fidelity tests
+  Claim_stamps face_round_;                          // round in which a face's offending flag was computed
+  Claim_stamps deviation_round_, vertex_round_;      // round in which the deviations below were computed
+  Claim_stamps changed_round_;                       // last round in which a vertex's move changed
+  Claim_stamps ring_changed_;                        // the same, for any vertex up to two edges away
+  std::vector<double> face_now_, vertex_now_;        // face_deviation (see face_within_tolerance()) and
+                                                     // vertex_deviation at `next`
+  std::vector<Witness> vertex_witness_;              // face first looked at by vertex_deviation
+  std::vector<std::array<Witness, 4>> face_witness_; // the same, for each point of face_deviation
+  std::vector<float> travel_;                        // per vertex: length of the path of its position at `next`
+                                                     // (at least: each step is added rounded up)
+  std::vector<std::array<float, 3>> face_travel_;    // travel_ of the face's vertices then
   std::vector<unsigned char> is_moved_;
   std::vector<unsigned char> above_floor_; // per vertex: set by its last round of cheap tests (every moved vertex
                                            // has one, and one after each shortening before its fidelity tests):
