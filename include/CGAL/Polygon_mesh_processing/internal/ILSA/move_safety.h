@@ -667,7 +667,9 @@ private:
   // faces in the scan (see Witness), is looked at first, and is set to the
   // face found in reach: the one that was in reach at the last call for the
   // same point is most often in reach again, vertices move little between two
-  // calls, so most scans look at one face.
+  // calls, so most scans look at one face. A face is looked at once, although
+  // it lies around several of the vertices scanned (but for a face around two
+  // neighbours, which costs more to tell).
   // At the input positions, a face whose bounding ball lies farther from `x`
   // than the best distance so far can neither lower it nor be in reach: its
   // distance is not computed (the result is the same).
@@ -691,16 +693,23 @@ private:
     };
     if (first != npos && in_reach(first)) return best;
     position = 0;
-    auto scan = [&](std::size_t u) {
-      for (const Index* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f, ++position)
-        if (*f != first && in_reach(*f)) return true;
+    // The faces around `u` but those around the first `scanned` vertices of
+    // `around`, which were looked at already.
+    auto scan = [&](std::size_t u, std::size_t scanned) {
+      for (const Index* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f, ++position) {
+        const auto& t = m_.faces[*f];
+        bool seen = false;
+        for (std::size_t j = 0; j < scanned; ++j)
+          seen = seen || t[0] == around[j] || t[1] == around[j] || t[2] == around[j];
+        if (!seen && *f != first && in_reach(*f)) return true;
+      }
       return false;
     };
-    for (std::size_t u : around)
-      if (scan(u)) return best;
+    for (std::size_t k = 0; k < N; ++k)
+      if (scan(around[k], k)) return best;
     for (std::size_t u : around)
       for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
-        if (scan(*w)) return best;
+        if (scan(*w, N)) return best;
     return best;
   }
 
