@@ -708,8 +708,13 @@ private:
     for (std::size_t k = 0; k < N; ++k)
       if (scan(around[k], k)) return best;
     for (std::size_t u : around)
-      for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
+      for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w) {
+        if (std::find(around.begin(), around.end(), *w) != around.end()) { // its faces were looked at
+          position += m_.vertex_faces.size(*w);
+          continue;
+        }
         if (scan(*w, N)) return best;
+      }
     return best;
   }
 
