@@ -694,8 +694,12 @@ private:
     if (first != npos && in_reach(first)) return best;
     position = 0;
     // The faces around `u` but those around the first `scanned` vertices of
-    // `around`, which were looked at already.
-    auto scan = [&](std::size_t u, std::size_t scanned) {
+    // `around`, which were looked at already (all of them if `u` is one).
+    for_each_scanned_vertex(around, [&](std::size_t u, std::size_t scanned) {
+      if (std::find(around.begin(), around.begin() + scanned, u) != around.begin() + scanned) {
+        position += m_.vertex_faces.size(u);
+        return false;
+      }
       for (const Index* f = m_.vertex_faces.first(u); f != m_.vertex_faces.last(u); ++f, ++position) {
         const auto& t = m_.faces[*f];
         bool seen = false;
@@ -704,37 +708,36 @@ private:
         if (!seen && *f != first && in_reach(*f)) return true;
       }
       return false;
-    };
-    for (std::size_t k = 0; k < N; ++k)
-      if (scan(around[k], k)) return best;
-    for (std::size_t u : around)
-      for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w) {
-        if (std::find(around.begin(), around.end(), *w) != around.end()) { // its faces were looked at
-          position += m_.vertex_faces.size(*w);
-          continue;
-        }
-        if (scan(*w, N)) return best;
-      }
+    });
     return best;
+  }
+
+  // Calls `f(u, scanned)` for the vertices whose faces squared_distance_near()
+  // scans, in its order, until `f` returns true: the vertices of `around`
+  // (`scanned`: how many of them come before), then their neighbours
+  // (`scanned`: N). Returns whether `f` returned true.
+  template <class I, std::size_t N, class F>
+  bool for_each_scanned_vertex(const std::array<I, N>& around, const F& f) const {
+    for (std::size_t k = 0; k < N; ++k)
+      if (f(std::size_t(around[k]), k)) return true;
+    for (std::size_t u : around)
+      for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
+        if (f(std::size_t(*w), N)) return true;
+    return false;
   }
 
   // The face at `position` in the scan of squared_distance_near() around
   // `around`, npos for no_witness.
   template <class I, std::size_t N> std::size_t face_in_scan(const std::array<I, N>& around, Witness position) const {
     if (position == no_witness) return npos;
-    std::size_t k = position;
-    auto within = [&](std::size_t u) {
+    std::size_t k = position, face = npos;
+    for_each_scanned_vertex(around, [&](std::size_t u, std::size_t) {
       const std::size_t n = m_.vertex_faces.size(u);
-      if (k < n) return true;
-      k -= n;
-      return false;
-    };
-    for (std::size_t u : around)
-      if (within(u)) return m_.vertex_faces.first(u)[k];
-    for (std::size_t u : around)
-      for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
-        if (within(*w)) return m_.vertex_faces.first(*w)[k];
-    return npos;
+      if (k < n) face = m_.vertex_faces.first(u)[k];
+      k -= (std::min)(k, n);
+      return face != npos;
+    });
+    return face;
   }
 
   struct Star_quality {
