@@ -61,6 +61,7 @@ struct Options {
   // The library's defaults (the usage text below states them; test_ilsa_smoothing checks that it does).
   unsigned int iterations = defaults::number_of_iterations, relaxation_steps = defaults::number_of_relaxation_steps;
   unsigned int penalty_steps = defaults::penalty_steps;
+  bool penalty_gauss_seidel = defaults::penalty_gauss_seidel;
   bool tangential = defaults::tangential_displacement;
   double relax1 = defaults::relaxation, relax2 = defaults::penalty_relaxation, mu = defaults::penalty_mu;
   double wl = defaults::length_weight, wa = defaults::area_weight, feature_angle = defaults::feature_angle;
@@ -101,6 +102,8 @@ const char* usage =
     "                          with both stops disabled every iteration runs\n"
     "  --relaxation-steps N    sweeps of the ILSA step per iteration (default 2)\n"
     "  --penalty-steps N       sweeps of the penalty step per iteration (default 8)\n"
+    "  --gauss-seidel 0|1      1: multicolour Gauss-Seidel sweeps of the penalty step,\n"
+    "                          0: Jacobi sweeps (the paper) (default 0)\n"
     "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
     "  --relax2 X              penalty relaxation, (0,1] (default 0.8)\n"
     "  --tangential 0|1        drop the normal component of the displacements,\n"
@@ -172,6 +175,7 @@ Options parse(int argc, char** argv) {
       {"--iterations", [&](const std::string& s) { o.iterations = parse_count("--iterations", s); }},
       {"--relaxation-steps", [&](const std::string& s) { o.relaxation_steps = parse_count("--relaxation-steps", s); }},
       {"--penalty-steps", [&](const std::string& s) { o.penalty_steps = parse_count("--penalty-steps", s); }},
+      {"--gauss-seidel", [&](const std::string& s) { o.penalty_gauss_seidel = parse_count("--gauss-seidel", s) != 0; }},
       {"--tangential", [&](const std::string& s) { o.tangential = parse_count("--tangential", s) != 0; }},
       {"--relax1", [&](const std::string& s) { o.relax1 = parse_number("--relax1", s); }},
       {"--relax2", [&](const std::string& s) { o.relax2 = parse_number("--relax2", s); }},
@@ -341,6 +345,7 @@ auto smoothing_parameters(const Options& o, const std::function<bool(double)>& c
   return CGAL::parameters::number_of_iterations(o.iterations)
       .number_of_relaxation_steps(o.relaxation_steps)
       .ilsa_penalty_steps(o.penalty_steps)
+      .ilsa_penalty_gauss_seidel(o.penalty_gauss_seidel)
       .ilsa_tangential_displacement(o.tangential)
       .ilsa_relaxation(o.relax1)
       .ilsa_penalty_relaxation(o.relax2)

@@ -259,6 +259,10 @@ int main() {
     std::mt19937 penalty_rng(32452843u + unsigned(c));
     const unsigned penalty_steps = 1 + unsigned(unit(penalty_rng) * 12);
     const bool tangential = unit(penalty_rng) < 2. / 3.;
+    // Multicolour Gauss-Seidel sweeps of the penalty step in a quarter of the
+    // cases, from a generator of their own.
+    std::mt19937 order_rng(15485863u + unsigned(c));
+    const bool gauss_seidel = unit(order_rng) < 0.25;
 
     // A fifth of the cases stop through the callback, after the iteration that
     // reaches `stop_after` (drawn from a generator of its own, so that the
@@ -279,6 +283,7 @@ int main() {
                   .number_of_relaxation_steps(steps)
                   .ilsa_penalty_steps(penalty_steps)
                   .ilsa_tangential_displacement(tangential)
+                  .ilsa_penalty_gauss_seidel(gauss_seidel)
                   .ilsa_relaxation(relax1)
                   .ilsa_penalty_relaxation(relax2)
                   .ilsa_penalty_mu(mu)
@@ -618,17 +623,18 @@ int main() {
     if (!ok) {
       ++failures;
       std::cout << "case " << c << " (" << files[which] << ", iterations " << iterations << ", steps " << steps
-                << ", penalty steps " << penalty_steps << ", tangential " << tangential << ", relax1 " << relax1
-                << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa << ", angle " << angle
-                << ", fix " << fix << ", floor " << (default_floor ? -1. : floor) << ", monotone " << monotone
-                << ", reject worsening " << reject_worsening << ", kink " << kink << ", crease contrast " << contrast
-                << ", open crease edges " << open_edges << ", tolerance " << tolerance << ", gain " << gain
-                << ", remaining gain " << remaining_gain << ", retry distance " << retry << ", project " << project
-                << ", safety " << safety << ", range " << use_range << ", vertex map " << use_vertex_map
-                << ", edge map " << use_edge_map << ", relax " << relax << "): flipped " << f.number_of_flipped_faces
-                << ", collapsed edges " << collapsed_edges << ", zero-area input faces opened reversed " << reversed
-                << ", distance " << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite "
-                << non_finite << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
+                << ", penalty steps " << penalty_steps << ", Gauss-Seidel " << gauss_seidel << ", tangential "
+                << tangential << ", relax1 " << relax1 << ", relax2 " << relax2 << ", mu " << mu << ", wl " << wl
+                << ", wa " << wa << ", angle " << angle << ", fix " << fix << ", floor "
+                << (default_floor ? -1. : floor) << ", monotone " << monotone << ", reject worsening "
+                << reject_worsening << ", kink " << kink << ", crease contrast " << contrast << ", open crease edges "
+                << open_edges << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain "
+                << remaining_gain << ", retry distance " << retry << ", project " << project << ", safety " << safety
+                << ", range " << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map
+                << ", relax " << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges "
+                << collapsed_edges << ", zero-area input faces opened reversed " << reversed << ", distance "
+                << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
+                << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
                 << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
                 << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
                 << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "

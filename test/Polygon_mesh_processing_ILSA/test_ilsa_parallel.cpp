@@ -1,9 +1,9 @@
 // Parallel runs (user manual, "Parallel runs"): smooth_surface_mesh_ilsa with
 // CGAL::Parallel_tag gives the same points, bit for bit, as the sequential
 // run, whatever the number of threads; on several meshes, with the
-// whole-mesh and the vertex-range overloads, with constraint maps, on
-// Surface_mesh and Polyhedron_3. Without TBB, Parallel_if_available_tag runs
-// sequentially and the same comparison holds.
+// whole-mesh and the vertex-range overloads, with constraint maps, with the
+// Gauss-Seidel sweeps of the penalty step, on Surface_mesh and Polyhedron_3. Without TBB, Parallel_if_available_tag
+// runs sequentially and the same comparison holds.
 #include "ilsa_test_utils.h"
 
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
@@ -57,6 +57,17 @@ template <class Mesh> void test_meshes() {
         },
         name);
   }
+  // Multicolour Gauss-Seidel sweeps of the penalty step (user manual, "Sweep
+  // Order"): each colour is a parallel loop.
+  Mesh input = read_mesh<Mesh>(data_file("fandisk.off"));
+  perturb_on_surface(input, 0.5, 13);
+  compare(
+      input,
+      [](Mesh& m, auto tag) {
+        return PMP::smooth_surface_mesh_ilsa<decltype(tag)>(
+            m, CGAL::parameters::number_of_iterations(4).ilsa_penalty_gauss_seidel(true));
+      },
+      "fandisk, Gauss-Seidel penalty sweeps");
 }
 
 // The other paths of the loop: the paper's acceptance without fidelity bound,

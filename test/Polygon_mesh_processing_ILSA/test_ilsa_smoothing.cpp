@@ -3,8 +3,8 @@
 // face, better mean quality; planar grids stay planar (also without the
 // length term, which switches the penalty solve to SVD); Surface_mesh and
 // Polyhedron_3 agree; the result does not depend on the vertex order (Jacobi);
-// the flat copy's renumbering for locality; the penalty step's N(v) and its
-// solve by cofactors;
+// the flat copy's renumbering for locality; the penalty step's N(v), its
+// solve by cofactors and its multicolour Gauss-Seidel sweeps;
 // named parameters chain in both orders; the range overload fixes the rest;
 // the default quality floor keeps the input's minimum aspect ratio; no move
 // that lowers its star's mean quality is kept; the convergence stop; the
@@ -303,6 +303,73 @@ void test_penalty_vertex_normal() {
   }
   std::cout << "penalty vertex normal: " << nonzero << " of " << m.number_of_vertices() << " unit normals\n";
   assert(nonzero == m.number_of_vertices());
+}
+
+// Multicolour Gauss-Seidel sweeps of the penalty step (user manual, "Sweep
+// Order"): the colouring covers the smooth vertices once and gives no two
+// neighbours the same colour, and the sweeps are those of the vertices one
+// after the other in the order of the colours, each reading the displacements
+// (and targets) the vertices before it wrote, unlike Jacobi sweeps.
+void test_multicolour_sweeps() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  Surface_mesh tm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
+  perturb_on_surface(tm, 0.5, 14);
+  std::vector<Surface_mesh::Vertex_index> vertex_list;
+  std::vector<Surface_mesh::Edge_index> edge_list;
+  ilsa::Set_up_incidences incidences;
+  const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list, incidences);
+  const ilsa::Vertex_classification classification = ilsa::classify(m, incidences, ilsa::Classification_options());
+  const ilsa::ILSA_neighborhoods nb =
+      ilsa::make_neighborhoods(m, classification, std::vector<unsigned char>(m.number_of_vertices(), 1));
+  const ilsa::Vertex_colours colours = ilsa::colour_vertices(m, nb.smooth);
+
+  std::vector<std::size_t> colour_of(m.number_of_vertices(), std::size_t(-1));
+  for (std::size_t c = 0; c < colours.number_of_colours(); ++c)
+    for (std::size_t i = colours.begin[c]; i < colours.begin[c + 1]; ++i) {
+      assert(colour_of[colours.vertices[i]] == std::size_t(-1));
+      colour_of[colours.vertices[i]] = c;
+    }
+  assert(colours.vertices.size() == nb.smooth.size());
+  for (std::size_t v : nb.smooth)
+    for (const ilsa::Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w)
+      assert(colour_of[*w] != colour_of[v]);
+
+  // Displacements of a tenth of the mean edge length, in random directions.
+  double mean_edge = 0;
+  for (const auto& e : m.edges) mean_edge += (m.points[e[0]] - m.points[e[1]]).norm();
+  mean_edge /= double(m.edges.size());
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  std::vector<ilsa::Vec3> start(m.number_of_vertices(), ilsa::Vec3::Zero());
+  for (std::size_t v : nb.smooth) start[v] = 0.1 * mean_edge * ilsa::Vec3(unit(rng), unit(rng), unit(rng));
+  ilsa::Penalty_parameters p;
+  p.sweeps = 3;
+  std::vector<double> beta, target;
+  auto sweeps = [&](const ilsa::Vertex_colours* order) {
+    std::vector<ilsa::Vec3> d = start, buffer;
+    assert(ilsa::adjust_displacement_by_penalty<CGAL::Sequential_tag>(m, m.points, nb, p, d, beta, buffer, target,
+                                                                      order) == p.sweeps);
+    return d;
+  };
+  const auto jacobi = sweeps(nullptr), gauss_seidel = sweeps(&colours); // `beta` holds the step's weights
+
+  std::vector<ilsa::Vec3> d = start;
+  for (std::size_t w = 0; w < m.number_of_vertices(); ++w)
+    for (int i = 0; i < 3; ++i) target[3 * w + i] = m.points[w][i] + d[w][i];
+  for (std::size_t sweep = 0; sweep < p.sweeps; ++sweep)
+    for (std::size_t v : colours.vertices) {
+      const ilsa::Vec3 d_new = ilsa::minimize_penalty_function(m, m.points, d, target, beta, v, p);
+      d[v] = p.relax2 * d_new + (1. - p.relax2) * d[v];
+      for (int i = 0; i < 3; ++i) target[3 * v + i] = m.points[v][i] + d[v][i];
+    }
+  std::size_t same = 0, unlike_jacobi = 0;
+  for (std::size_t v : nb.smooth) same += gauss_seidel[v] == d[v], unlike_jacobi += !(gauss_seidel[v] == jacobi[v]);
+  std::cout << "multicolour sweeps: " << colours.number_of_colours() << " colours of " << nb.smooth.size()
+            << " smooth vertices; " << same << " displacements as in sweeps one vertex after the other, "
+            << unlike_jacobi << " unlike Jacobi sweeps'" << std::endl;
+  assert(colours.number_of_colours() >= 3);
+  assert(same == nb.smooth.size());
+  assert(unlike_jacobi > nb.smooth.size() / 2);
 }
 
 // The penalty step's 3x3 solve by cofactors agrees with Eigen's Cholesky
@@ -1120,6 +1187,7 @@ void test_documented_defaults() {
                                               {"ilsa_minimum_remaining_gain", defaults::minimum_remaining_gain},
                                               {"number_of_relaxation_steps", defaults::number_of_relaxation_steps},
                                               {"ilsa_penalty_steps", defaults::penalty_steps},
+                                              {"ilsa_penalty_gauss_seidel", defaults::penalty_gauss_seidel},
                                               {"ilsa_tangential_displacement", defaults::tangential_displacement},
                                               {"ilsa_relaxation", defaults::relaxation},
                                               {"ilsa_penalty_relaxation", defaults::penalty_relaxation},
@@ -1206,6 +1274,7 @@ void test_documented_defaults() {
                                                       {"--min-remaining-gain", "ilsa_minimum_remaining_gain"},
                                                       {"--relaxation-steps", "number_of_relaxation_steps"},
                                                       {"--penalty-steps", "ilsa_penalty_steps"},
+                                                      {"--gauss-seidel", "ilsa_penalty_gauss_seidel"},
                                                       {"--tangential", "ilsa_tangential_displacement"},
                                                       {"--relax1", "ilsa_relaxation"},
                                                       {"--relax2", "ilsa_penalty_relaxation"},
@@ -1233,7 +1302,7 @@ void test_documented_defaults() {
   std::cout << "documented defaults: " << checked << " statements agree with internal/ILSA/defaults.h (reference "
             << smoother << " + " << classification << " + " << quality << ", manual " << manual << ", tool " << tool
             << ")" << std::endl;
-  assert(smoother >= 18 && classification >= 4 && quality >= 4 && manual >= 16 && tool == 18);
+  assert(smoother >= 19 && classification >= 4 && quality >= 4 && manual >= 19 && tool == 19);
 }
 
 int main() {
@@ -1276,6 +1345,7 @@ int main() {
   test_locality_order();
   test_penalty_vertex_normal();
   test_penalty_cofactors();
+  test_multicolour_sweeps();
   test_degenerate_reference<Surface_mesh>();
   test_degenerate_reference<Polyhedron>();
   test_inlined_aspect_ratio();

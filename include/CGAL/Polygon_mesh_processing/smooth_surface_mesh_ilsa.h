@@ -139,6 +139,15 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *     \cgalParamType{unsigned int, 1 to 10000}
  *     \cgalParamDefault{`8`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_penalty_gauss_seidel}
+ *     \cgalParamDescription{if `true`, the sweeps of the penalty step are multicolour Gauss-Seidel sweeps: the smooth
+ * vertices are coloured once so that no two neighbours share a colour, and each sweep updates one colour after the
+ * other, each reading what the colours before it wrote (the result still does not depend on the number of threads);
+ * `false` runs the paper's Jacobi sweeps, where every vertex reads the previous sweep's values (user manual, "Sweep
+ * Order")}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_tangential_displacement}
  *     \cgalParamDescription{if `true`, the displacement of a smooth vertex loses its component along the vertex normal
  * (the area-weighted normal of its faces) before it is projected onto the input; `false` moves it as the paper does,

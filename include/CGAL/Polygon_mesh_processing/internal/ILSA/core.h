@@ -125,7 +125,8 @@ struct Penalty_parameters {
   double length_weight = defaults::length_weight; // wl
   double area_weight = defaults::area_weight;     // wa
   std::size_t sweeps = defaults::penalty_steps;
-  double tolerance = 0; // stop once no displacement changes by more
+  bool gauss_seidel = defaults::penalty_gauss_seidel; // sweep order (user manual, "Sweep Order")
+  double tolerance = 0;                               // stop once no displacement changes by more
 };
 
 struct Smoothing_parameters {

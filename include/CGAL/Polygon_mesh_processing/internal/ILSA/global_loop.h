@@ -65,6 +65,7 @@ public:
     // Its weights' array, idle during the penalty step, holds the step's
     // targets (three doubles per vertex): one allocation for both.
     workspace_.weights.reserve((std::max)(m_.edges.size(), 3 * pos_.size()));
+    if (penalty_.gauss_seidel) colours_ = colour_vertices(m_, nb_.smooth);
     limit_retries_ = p_.use_safety && p_.retry_distance > 0;
     retry_length_ = p_.retry_distance * mean_edge_length;
     if (limit_retries_) settled_.assign(pos_.size(), -1.f);
@@ -132,8 +133,8 @@ private:
   // projection fills it.
   void compute_displacements() {
     compute_ilsa_displacement<ConcurrencyTag>(pos_, nb_, p_.relax1, p_.sweeps, tolerance_, d_, workspace_, next_);
-    adjust_displacement_by_penalty<ConcurrencyTag>(m_, pos_, nb_, penalty_, d_, face_values_, next_,
-                                                   workspace_.weights);
+    adjust_displacement_by_penalty<ConcurrencyTag>(m_, pos_, nb_, penalty_, d_, face_values_, next_, workspace_.weights,
+                                                   penalty_.gauss_seidel ? &colours_ : nullptr);
     if (p_.tangential) remove_normal_components<ConcurrencyTag>(m_, pos_, nb_.smooth, d_);
   }
 
@@ -237,6 +238,7 @@ private:
   std::vector<Index> home_, next_home_, moved_;
   std::vector<unsigned char> guarded_, skipped_;
   ILSA_workspace workspace_;
+  Vertex_colours colours_; // of the smooth vertices, for Gauss-Seidel sweeps of the penalty step
   bool limit_retries_ = false;
   double retry_length_ = 0;
   // settled_[v]: the length the neighbours of `v` have travelled since it

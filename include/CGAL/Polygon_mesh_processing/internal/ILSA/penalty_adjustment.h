@@ -124,12 +124,15 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 /// `target`, before each sweep, the unprojected target `pos + d` of each
 /// vertex, which every neighbour's solve reads up to three times (all three
 /// overwritten: the caller lends arrays it does not need meanwhile).
+/// With `colours` (the smooth vertices of `nb` coloured by colour_vertices()),
+/// the sweeps are multicolour Gauss-Seidel sweeps (user manual, "Sweep
+/// Order"), which leave `buffer` alone; without, Jacobi sweeps (the paper's).
 /// Returns the number of sweeps run.
 template <class ConcurrencyTag>
 std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
                                            const ILSA_neighborhoods& nb, const Penalty_parameters& p,
                                            std::vector<Vec3>& d, std::vector<double>& beta, std::vector<Vec3>& buffer,
-                                           std::vector<double>& target) {
+                                           std::vector<double>& target, const Vertex_colours* colours = nullptr) {
   // β_j from the current faces; a floor at 1e-3 of the mean area keeps a
   // degenerate face from swamping the star.
   beta.resize(m.number_of_faces());
@@ -143,18 +146,19 @@ std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector
                                [&](std::size_t f) { beta[f] = 1. / (std::max)(beta[f], smallest_area); });
 
   target.resize((std::max)(target.size(), 3 * pos.size()));
-  return run_jacobi_sweeps<ConcurrencyTag>(
-      nb.smooth, p.sweeps, p.tolerance, d, buffer,
-      [&](std::size_t v) {
-        const Vec3 d_new = minimize_penalty_function(m, pos, d, target, beta, v, p);
-        return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
-      },
-      [&] {
-        parallel_for<ConcurrencyTag>(pos.size(), [&](std::size_t w) {
-          Eigen::Map<Vec3> at(&target[3 * w]);
-          at = pos[w] + d[w];
-        });
-      });
+  const auto update = [&](std::size_t v) {
+    const Vec3 d_new = minimize_penalty_function(m, pos, d, target, beta, v, p);
+    return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
+  };
+  const auto set_target = [&](std::size_t w) {
+    Eigen::Map<Vec3> at(&target[3 * w]);
+    at = pos[w] + d[w];
+  };
+  const auto set_targets = [&] { parallel_for<ConcurrencyTag>(pos.size(), set_target); };
+  if (colours == nullptr)
+    return run_jacobi_sweeps<ConcurrencyTag>(nb.smooth, p.sweeps, p.tolerance, d, buffer, update, set_targets);
+  set_targets();
+  return run_multicolour_sweeps<ConcurrencyTag>(*colours, p.sweeps, p.tolerance, d, update, set_target);
 }
 
 /// Removes from `d[v]`, for each vertex `v` of `vertices`, its component along
