@@ -62,6 +62,17 @@ flat_copy(const Mesh& tm, std::vector<typename boost::graph_traits<Mesh>::vertex
                                ilsa::face_index_map_of(tm, np), edge_list, incidences);
 }
 
+// The flat copy of the fandisk perturbed on its surface by `amount` (see perturb_on_surface()).
+CGAL::Polygon_mesh_processing::internal::ILSA::Flat_mesh
+perturbed_flat_fandisk(double amount, unsigned seed,
+                       CGAL::Polygon_mesh_processing::internal::ILSA::Set_up_incidences& incidences) {
+  Surface_mesh tm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
+  perturb_on_surface(tm, amount, seed);
+  std::vector<Surface_mesh::Vertex_index> vertex_list;
+  std::vector<Surface_mesh::Edge_index> edge_list;
+  return flat_copy(tm, vertex_list, edge_list, incidences);
+}
+
 template <class Mesh> void test_perturbed_cube() {
   const int n = 8;
   Soup soup = cube(n);
@@ -285,12 +296,8 @@ void test_locality_order() {
 // from the normals of all faces, normalised.
 void test_penalty_vertex_normal() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
-  Surface_mesh tm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
-  perturb_on_surface(tm, 0.3, 12);
-  std::vector<Surface_mesh::Vertex_index> vertex_list;
-  std::vector<Surface_mesh::Edge_index> edge_list;
   ilsa::Set_up_incidences incidences;
-  const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list, incidences);
+  const ilsa::Flat_mesh m = perturbed_flat_fandisk(0.3, 12, incidences);
   std::vector<ilsa::Vec3> normals;
   ilsa::compute_face_normals(m, m.points, normals);
   std::size_t nonzero = 0;
@@ -312,12 +319,8 @@ void test_penalty_vertex_normal() {
 // (and targets) the vertices before it wrote, unlike Jacobi sweeps.
 void test_multicolour_sweeps() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
-  Surface_mesh tm = read_mesh<Surface_mesh>(data_file("fandisk.off"));
-  perturb_on_surface(tm, 0.5, 14);
-  std::vector<Surface_mesh::Vertex_index> vertex_list;
-  std::vector<Surface_mesh::Edge_index> edge_list;
   ilsa::Set_up_incidences incidences;
-  const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list, incidences);
+  const ilsa::Flat_mesh m = perturbed_flat_fandisk(0.5, 14, incidences);
   const ilsa::Vertex_classification classification = ilsa::classify(m, incidences, ilsa::Classification_options());
   const ilsa::ILSA_neighborhoods nb =
       ilsa::make_neighborhoods(m, classification, std::vector<unsigned char>(m.number_of_vertices(), 1));
