@@ -34,6 +34,36 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
+/// Copies the user's constraint maps of `np` (`vertex_is_constrained_map`,
+/// `edge_is_constrained_map` with `relax_constraints`) into the flat arrays
+/// `vertex_store` and `edge_store`, which `options` then points to.
+template <class NamedParameters, class VertexDescriptor, class EdgeDescriptor>
+void read_constraint_maps(const Flat_mesh& m, const NamedParameters& np,
+                          const std::vector<VertexDescriptor>& vertex_list,
+                          const std::vector<EdgeDescriptor>& edge_list, std::vector<unsigned char>& vertex_store,
+                          std::vector<unsigned char>& edge_store, Classification_options& options) {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
+                                    Static_boolean_property_map<VertexDescriptor, false>());
+  vertex_store.resize(vertex_list.size());
+  for (std::size_t i = 0; i < vertex_list.size(); ++i) vertex_store[i] = get(vcm, vertex_list[i]) ? 1 : 0;
+  options.constrained_vertices = &vertex_store;
+
+  if (!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value) {
+    const auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
+                                      Static_boolean_property_map<EdgeDescriptor, false>());
+    edge_store.resize(edge_list.size());
+    for (std::size_t i = 0; i < edge_list.size(); ++i) edge_store[i] = get(ecm, edge_list[i]) ? 1 : 0;
+    options.constrained_edges = &edge_store;
+    // CGAL's relax_constraints (user manual, "Constrained Edges"): unless it is
+    // true, the ends of the constrained edges do not move, as in CGAL's smoothers.
+    if (!choose_parameter(get_parameter(np, internal_np::relax_constraints), defaults::relax_constraints))
+      for (std::size_t i = 0; i < edge_list.size(); ++i)
+        if (edge_store[i]) vertex_store[m.edges[i][0]] = vertex_store[m.edges[i][1]] = 1;
+  }
+}
+
 /// Reads the classification parameters of `np` (paper §3; user constraints as documented) into
 /// `options`; the user's constraint maps are copied into the flat arrays
 /// `vertex_store` and `edge_store`, which `options` points to.
@@ -45,8 +75,6 @@ Classification_options read_classification_parameters(
     std::vector<unsigned char>& vertex_store, std::vector<unsigned char>& edge_store) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
   CGAL_USE(tm);
 
   Classification_options options;
@@ -79,24 +107,7 @@ Classification_options read_classification_parameters(
                      std::to_string(double(minimum_edges)));
   options.minimum_open_crease_edges = std::size_t(minimum_edges);
 
-  const auto vcm = choose_parameter(get_parameter(np, internal_np::vertex_is_constrained),
-                                    Static_boolean_property_map<vertex_descriptor, false>());
-  vertex_store.resize(vertex_list.size());
-  for (std::size_t i = 0; i < vertex_list.size(); ++i) vertex_store[i] = get(vcm, vertex_list[i]) ? 1 : 0;
-  options.constrained_vertices = &vertex_store;
-
-  if (!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value) {
-    const auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
-                                      Static_boolean_property_map<edge_descriptor, false>());
-    edge_store.resize(edge_list.size());
-    for (std::size_t i = 0; i < edge_list.size(); ++i) edge_store[i] = get(ecm, edge_list[i]) ? 1 : 0;
-    options.constrained_edges = &edge_store;
-    // CGAL's relax_constraints (user manual, "Constrained Edges"): unless it is
-    // true, the ends of the constrained edges do not move, as in CGAL's smoothers.
-    if (!choose_parameter(get_parameter(np, internal_np::relax_constraints), defaults::relax_constraints))
-      for (std::size_t i = 0; i < edge_list.size(); ++i)
-        if (edge_store[i]) vertex_store[m.edges[i][0]] = vertex_store[m.edges[i][1]] = 1;
-  }
+  read_constraint_maps(m, np, vertex_list, edge_list, vertex_store, edge_store, options);
   return options;
 }
 

@@ -25,6 +25,33 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
+/// Throws `ILSA_error` for a smoothing parameter out of its range; the counts
+/// are checked as given, before their conversion to `std::size_t`.
+inline void check_smoothing_parameters(const Smoothing_parameters& p, double iterations, double sweeps,
+                                       double penalty_sweeps) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw ILSA_error(what);
+  };
+  require(p.quality_floor >= 0 && p.quality_floor < 1, "ilsa_quality_floor must be in [0, 1)");
+  require(p.fidelity_tolerance > 0, "ilsa_fidelity_tolerance must be positive (infinity disables the check)");
+  require(p.minimum_gain >= 0 && std::isfinite(p.minimum_gain),
+          "ilsa_minimum_quality_gain must be non-negative and finite (0 disables this stop)");
+  require(p.minimum_remaining_gain >= 0 && std::isfinite(p.minimum_remaining_gain),
+          "ilsa_minimum_remaining_gain must be non-negative and finite (0 disables this stop)");
+  require(p.retry_distance >= 0 && std::isfinite(p.retry_distance),
+          "ilsa_retry_distance must be non-negative and finite (0 retries every dropped move at once)");
+  require(iterations >= 0 && iterations <= 100000, "number_of_iterations must be in [0, 100000]");
+  require(sweeps >= 1 && sweeps <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
+  require(penalty_sweeps >= 1 && penalty_sweeps <= 10000, "ilsa_penalty_steps must be in [1, 10000]");
+  require(p.relax1 > 0 && p.relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
+  require(p.penalty.relax2 > 0 && p.penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]");
+  require(p.penalty.mu > 0 && std::isfinite(p.penalty.mu), "ilsa_penalty_mu must be positive and finite");
+  require(p.penalty.length_weight >= 0 && std::isfinite(p.penalty.length_weight),
+          "ilsa_length_weight must be non-negative and finite");
+  require(p.penalty.area_weight >= 0 && std::isfinite(p.penalty.area_weight),
+          "ilsa_area_weight must be non-negative and finite");
+}
+
 /// Reads the smoothing parameters of `np`; throws `ILSA_error` for a value out of range.
 template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(const NamedParameters& np) {
   using parameters::choose_parameter;
@@ -67,27 +94,7 @@ template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(
   p.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   p.callback = choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
 
-  auto require = [](bool ok, const std::string& what) {
-    if (!ok) throw ILSA_error(what);
-  };
-  require(p.quality_floor >= 0 && p.quality_floor < 1, "ilsa_quality_floor must be in [0, 1)");
-  require(p.fidelity_tolerance > 0, "ilsa_fidelity_tolerance must be positive (infinity disables the check)");
-  require(p.minimum_gain >= 0 && std::isfinite(p.minimum_gain),
-          "ilsa_minimum_quality_gain must be non-negative and finite (0 disables this stop)");
-  require(p.minimum_remaining_gain >= 0 && std::isfinite(p.minimum_remaining_gain),
-          "ilsa_minimum_remaining_gain must be non-negative and finite (0 disables this stop)");
-  require(p.retry_distance >= 0 && std::isfinite(p.retry_distance),
-          "ilsa_retry_distance must be non-negative and finite (0 retries every dropped move at once)");
-  require(double(iterations) >= 0 && double(iterations) <= 100000, "number_of_iterations must be in [0, 100000]");
-  require(double(sweeps) >= 1 && double(sweeps) <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
-  require(double(penalty_sweeps) >= 1 && double(penalty_sweeps) <= 10000, "ilsa_penalty_steps must be in [1, 10000]");
-  require(p.relax1 > 0 && p.relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
-  require(penalty.relax2 > 0 && penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]");
-  require(penalty.mu > 0 && std::isfinite(penalty.mu), "ilsa_penalty_mu must be positive and finite");
-  require(penalty.length_weight >= 0 && std::isfinite(penalty.length_weight),
-          "ilsa_length_weight must be non-negative and finite");
-  require(penalty.area_weight >= 0 && std::isfinite(penalty.area_weight),
-          "ilsa_area_weight must be non-negative and finite");
+  check_smoothing_parameters(p, double(iterations), double(sweeps), double(penalty_sweeps));
   p.iterations = std::size_t(iterations);
   p.sweeps = std::size_t(sweeps);
   penalty.sweeps = std::size_t(penalty_sweeps);
