@@ -63,6 +63,7 @@ struct Options {
   unsigned int penalty_steps = defaults::penalty_steps;
   bool penalty_gauss_seidel = defaults::penalty_gauss_seidel;
   bool tangential = defaults::tangential_displacement;
+  bool tangential_sweeps = defaults::tangential_sweeps;
   double relax1 = defaults::relaxation, relax2 = defaults::penalty_relaxation, mu = defaults::penalty_mu;
   double wl = defaults::length_weight, wa = defaults::area_weight, feature_angle = defaults::feature_angle;
   double fidelity_tolerance = defaults::fidelity_tolerance;
@@ -108,6 +109,8 @@ const char* usage =
     "  --relax2 X              penalty relaxation, (0,1] (default 0.8)\n"
     "  --tangential 0|1        drop the normal component of the displacements,\n"
     "                          0: keep it (the paper) (default 1)\n"
+    "  --tangential-sweeps 0|1 1: every penalty sweep drops the normal component,\n"
+    "                          0: dropped once after the sweeps (default 1)\n"
     "  --mu X                  penalty parameter, > 0 (default 1)\n"
     "  --wl X                  length weight, >= 0 (default 1)\n"
     "  --wa X                  area weight, >= 0 (default 0.1)\n"
@@ -177,6 +180,8 @@ Options parse(int argc, char** argv) {
       {"--penalty-steps", [&](const std::string& s) { o.penalty_steps = parse_count("--penalty-steps", s); }},
       {"--gauss-seidel", [&](const std::string& s) { o.penalty_gauss_seidel = parse_count("--gauss-seidel", s) != 0; }},
       {"--tangential", [&](const std::string& s) { o.tangential = parse_count("--tangential", s) != 0; }},
+      {"--tangential-sweeps",
+       [&](const std::string& s) { o.tangential_sweeps = parse_count("--tangential-sweeps", s) != 0; }},
       {"--relax1", [&](const std::string& s) { o.relax1 = parse_number("--relax1", s); }},
       {"--relax2", [&](const std::string& s) { o.relax2 = parse_number("--relax2", s); }},
       {"--mu", [&](const std::string& s) { o.mu = parse_number("--mu", s); }},
@@ -347,6 +352,7 @@ auto smoothing_parameters(const Options& o, const std::function<bool(double)>& c
       .ilsa_penalty_steps(o.penalty_steps)
       .ilsa_penalty_gauss_seidel(o.penalty_gauss_seidel)
       .ilsa_tangential_displacement(o.tangential)
+      .ilsa_tangential_sweeps(o.tangential_sweeps)
       .ilsa_relaxation(o.relax1)
       .ilsa_penalty_relaxation(o.relax2)
       .ilsa_penalty_mu(o.mu)

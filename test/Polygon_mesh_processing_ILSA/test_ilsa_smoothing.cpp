@@ -4,7 +4,7 @@
 // length term, which switches the penalty solve to SVD); Surface_mesh and
 // Polyhedron_3 agree; the result does not depend on the vertex order (Jacobi);
 // the flat copy's renumbering for locality; the penalty step's N(v), its
-// solve by cofactors and its multicolour Gauss-Seidel sweeps;
+// solve by cofactors, its multicolour Gauss-Seidel and its tangential sweeps;
 // named parameters chain in both orders; the range overload fixes the rest;
 // the default quality floor keeps the input's minimum aspect ratio; no move
 // that lowers its star's mean quality is kept; the convergence stop; the
@@ -198,11 +198,15 @@ void test_sweep_parameters() {
   assert(defaults.sweeps == ilsa::defaults::number_of_relaxation_steps);
   assert(defaults.penalty.sweeps == ilsa::defaults::penalty_steps);
   assert(defaults.tangential == ilsa::defaults::tangential_displacement);
+  assert(defaults.penalty.tangential_sweeps == ilsa::defaults::tangential_sweeps);
   const auto ilsa_only = ilsa::read_smoothing_parameters(CGAL::parameters::number_of_relaxation_steps(3));
   assert(ilsa_only.sweeps == 3 && ilsa_only.penalty.sweeps == ilsa::defaults::penalty_steps);
   const auto both = ilsa::read_smoothing_parameters(
       CGAL::parameters::ilsa_penalty_steps(7).number_of_relaxation_steps(3).ilsa_tangential_displacement(false));
   assert(both.sweeps == 3 && both.penalty.sweeps == 7 && !both.tangential);
+  // The tangential sweeps only with tangential displacements.
+  assert(!both.penalty.tangential_sweeps);
+  assert(!ilsa::read_smoothing_parameters(CGAL::parameters::ilsa_tangential_sweeps(false)).penalty.tangential_sweeps);
   std::cout << "sweep parameters: read apart" << std::endl;
 }
 
@@ -312,12 +316,16 @@ void test_penalty_vertex_normal() {
   assert(nonzero == m.number_of_vertices());
 }
 
-// Multicolour Gauss-Seidel sweeps of the penalty step (user manual, "Sweep
-// Order"): the colouring covers the smooth vertices once and gives no two
-// neighbours the same colour, and the sweeps are those of the vertices one
-// after the other in the order of the colours, each reading the displacements
-// (and targets) the vertices before it wrote, unlike Jacobi sweeps.
-void test_multicolour_sweeps() {
+// The sweeps of the penalty step. Multicolour Gauss-Seidel sweeps (user
+// manual, "Sweep Order"): the colouring covers the smooth vertices once and
+// gives no two neighbours the same colour, and the sweeps are those of the
+// vertices one after the other in the order of the colours, each reading the
+// displacements (and targets) the vertices before it wrote, unlike Jacobi
+// sweeps. Tangential sweeps ("Tangential Sweeps", the default): every sweep
+// leaves the displacements in their tangent planes, so that the next one reads
+// tangential displacements, unlike dropping the normal components once after
+// the sweeps.
+void test_penalty_sweeps() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
   ilsa::Set_up_incidences incidences;
   const ilsa::Flat_mesh m = perturbed_flat_fandisk(0.5, 14, incidences);
@@ -362,7 +370,7 @@ void test_multicolour_sweeps() {
   for (std::size_t sweep = 0; sweep < p.sweeps; ++sweep)
     for (std::size_t v : colours.vertices) {
       const ilsa::Vec3 d_new = ilsa::minimize_penalty_function(m, m.points, d, target, beta, v, p);
-      d[v] = p.relax2 * d_new + (1. - p.relax2) * d[v];
+      d[v] = ilsa::without_normal_component(m, m.points, v, p.relax2 * d_new + (1. - p.relax2) * d[v]);
       for (int i = 0; i < 3; ++i) target[3 * v + i] = m.points[v][i] + d[v][i];
     }
   std::size_t same = 0, unlike_jacobi = 0;
@@ -373,6 +381,28 @@ void test_multicolour_sweeps() {
   assert(colours.number_of_colours() >= 3);
   assert(same == nb.smooth.size());
   assert(unlike_jacobi > nb.smooth.size() / 2);
+
+  // Jacobi sweeps (`jacobi` above) with and without the tangential sweeps.
+  auto largest_normal_component = [&](const std::vector<ilsa::Vec3>& displacements) {
+    double largest = 0;
+    for (std::size_t v : nb.smooth)
+      largest = (std::max)(
+          largest, (displacements[v] - ilsa::without_normal_component(m, m.points, v, displacements[v])).norm());
+    return largest / mean_edge;
+  };
+  assert(p.tangential_sweeps);
+  p.tangential_sweeps = false;
+  std::vector<ilsa::Vec3> once = sweeps(nullptr);
+  const double normal_without = largest_normal_component(once);
+  ilsa::remove_normal_components<CGAL::Sequential_tag>(m, m.points, nb.smooth, once);
+  std::size_t unlike_once = 0;
+  for (std::size_t v : nb.smooth) unlike_once += (jacobi[v] - once[v]).norm() > 1e-9 * mean_edge;
+  std::cout << "tangential sweeps: largest normal component " << largest_normal_component(jacobi) << " ("
+            << normal_without << " without) mean edge lengths; " << unlike_once
+            << " displacements unlike those of sweeps whose normal components are dropped once after them" << std::endl;
+  assert(largest_normal_component(jacobi) <= 1e-12);
+  assert(normal_without > 1e-3);
+  assert(unlike_once > nb.smooth.size() / 2);
 }
 
 // The penalty step's 3x3 solve by cofactors agrees with Eigen's Cholesky
@@ -1192,6 +1222,7 @@ void test_documented_defaults() {
                                               {"ilsa_penalty_steps", defaults::penalty_steps},
                                               {"ilsa_penalty_gauss_seidel", defaults::penalty_gauss_seidel},
                                               {"ilsa_tangential_displacement", defaults::tangential_displacement},
+                                              {"ilsa_tangential_sweeps", defaults::tangential_sweeps},
                                               {"ilsa_relaxation", defaults::relaxation},
                                               {"ilsa_penalty_relaxation", defaults::penalty_relaxation},
                                               {"ilsa_penalty_mu", defaults::penalty_mu},
@@ -1279,6 +1310,7 @@ void test_documented_defaults() {
                                                       {"--penalty-steps", "ilsa_penalty_steps"},
                                                       {"--gauss-seidel", "ilsa_penalty_gauss_seidel"},
                                                       {"--tangential", "ilsa_tangential_displacement"},
+                                                      {"--tangential-sweeps", "ilsa_tangential_sweeps"},
                                                       {"--relax1", "ilsa_relaxation"},
                                                       {"--relax2", "ilsa_penalty_relaxation"},
                                                       {"--mu", "ilsa_penalty_mu"},
@@ -1305,7 +1337,7 @@ void test_documented_defaults() {
   std::cout << "documented defaults: " << checked << " statements agree with internal/ILSA/defaults.h (reference "
             << smoother << " + " << classification << " + " << quality << ", manual " << manual << ", tool " << tool
             << ")" << std::endl;
-  assert(smoother >= 19 && classification >= 4 && quality >= 4 && manual >= 19 && tool == 19);
+  assert(smoother >= 20 && classification >= 4 && quality >= 4 && manual >= 20 && tool == 20);
 }
 
 int main() {
@@ -1348,7 +1380,7 @@ int main() {
   test_locality_order();
   test_penalty_vertex_normal();
   test_penalty_cofactors();
-  test_multicolour_sweeps();
+  test_penalty_sweeps();
   test_degenerate_reference<Surface_mesh>();
   test_degenerate_reference<Polyhedron>();
   test_inlined_aspect_ratio();

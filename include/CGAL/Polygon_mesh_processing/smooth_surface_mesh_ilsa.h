@@ -155,6 +155,14 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *     \cgalParamType{`bool`}
  *     \cgalParamDefault{`true`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_tangential_sweeps}
+ *     \cgalParamDescription{with `ilsa_tangential_displacement(true)`: if `true`, every sweep of the penalty step drops
+ * the normal component of the displacements it computes, so that the next sweep reads tangential displacements of the
+ * neighbours; `false` drops it once, after the sweeps, as versions before this parameter did (user manual, "Tangential
+ * Sweeps"). Ignored with `ilsa_tangential_displacement(false)`}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`true`}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_relaxation}
  *     \cgalParamDescription{the ILSA relaxation factor relax1 (share of the neighbours' weighted mean displacement
  * taken in each sweep)} \cgalParamType{`double`, in (0, 1]} \cgalParamDefault{`0.5`} \cgalParamNEnd

@@ -126,7 +126,10 @@ struct Penalty_parameters {
   double area_weight = defaults::area_weight;     // wa
   std::size_t sweeps = defaults::penalty_steps;
   bool gauss_seidel = defaults::penalty_gauss_seidel; // sweep order (user manual, "Sweep Order")
-  double tolerance = 0;                               // stop once no displacement changes by more
+  // Each sweep drops the normal component of the displacements (user manual,
+  // "Tangential Sweeps"); set only with Smoothing_parameters::tangential.
+  bool tangential_sweeps = defaults::tangential_sweeps;
+  double tolerance = 0; // stop once no displacement changes by more
 };
 
 struct Smoothing_parameters {

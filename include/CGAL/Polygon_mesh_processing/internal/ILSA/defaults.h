@@ -23,11 +23,12 @@ inline constexpr double minimum_quality_gain = 1e-4;
 inline constexpr double minimum_remaining_gain = 2e-3;
 
 // ILSA displacement and penalty step (user manual, "Sweeps per Iteration",
-// "Fewer, Longer Iterations" and "Sweep Order").
+// "Fewer, Longer Iterations", "Sweep Order" and "Tangential Sweeps").
 inline constexpr unsigned int number_of_relaxation_steps = 2; // sweeps of Algo. 2
 inline constexpr unsigned int penalty_steps = 8;              // sweeps of Algo. 3
 inline constexpr bool penalty_gauss_seidel = false;           // true: multicolour Gauss-Seidel sweeps of Algo. 3
 inline constexpr bool tangential_displacement = true; // false: the paper's displacement, normal component included
+inline constexpr bool tangential_sweeps = true;       // false: normal components dropped after the sweeps of Algo. 3
 inline constexpr double relaxation = 0.5;             // relax1
 inline constexpr double penalty_relaxation = 0.8;     // relax2
 inline constexpr double penalty_mu = 1.;

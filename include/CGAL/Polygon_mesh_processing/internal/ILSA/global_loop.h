@@ -127,15 +127,17 @@ private:
 
   // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices
   // (Algo. 3; the face normals of T_new give the discrete normal N(v) of
-  // paper §3 where the penalty plane needs it), then, by default, without
-  // its component along the vertex normal (user manual, "Fewer, Longer
-  // Iterations"). `next_` serves as the sweeps' second buffer before the
-  // projection fills it.
+  // paper §3 where the penalty plane needs it), by default without its
+  // component along the vertex normal (user manual, "Fewer, Longer
+  // Iterations"), which each sweep of Algo. 3 drops ("Tangential Sweeps"),
+  // or else a last pass. `next_` serves as the sweeps' second buffer before
+  // the projection fills it.
   void compute_displacements() {
     compute_ilsa_displacement<ConcurrencyTag>(pos_, nb_, p_.relax1, p_.sweeps, tolerance_, d_, workspace_, next_);
     adjust_displacement_by_penalty<ConcurrencyTag>(m_, pos_, nb_, penalty_, d_, face_values_, next_, workspace_.weights,
                                                    penalty_.gauss_seidel ? &colours_ : nullptr);
-    if (p_.tangential) remove_normal_components<ConcurrencyTag>(m_, pos_, nb_.smooth, d_);
+    if (p_.tangential && !penalty_.tangential_sweeps)
+      remove_normal_components<ConcurrencyTag>(m_, pos_, nb_.smooth, d_);
   }
 
   // p(v): projection of v + d(v) onto T_ori, into `next_`; a move the check

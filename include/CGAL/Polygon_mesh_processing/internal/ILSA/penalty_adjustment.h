@@ -50,6 +50,23 @@ inline Vec3 unit_vertex_normal(const Flat_mesh& m, const std::vector<Vec3>& pos,
   return n.norm() > 0 ? Vec3(n.normalized()) : n;
 }
 
+/// `displacement` of vertex `v` without its component along the area-weighted
+/// normal of its faces at `pos` (user manual, "Fewer, Longer Iterations"): the
+/// move stays in the tangent plane, and the projection onto the input only
+/// corrects the curvature. Unchanged for a vertex whose faces have no area.
+/// The normal is computed at each call rather than stored: the penalty sweeps
+/// call this for every smooth vertex, and an array of normals would cost 24
+/// bytes per vertex (user manual, "Tangential Sweeps").
+inline Vec3 without_normal_component(const Flat_mesh& m, const std::vector<Vec3>& pos, std::size_t v,
+                                     const Vec3& displacement) {
+  Vec3 n = Vec3::Zero();
+  for (const Index* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) n += area_vector(pos, m.faces[*f]);
+  const double length = n.norm();
+  if (!(length > 0) || !std::isfinite(length)) return displacement;
+  n /= length;
+  return displacement - displacement.dot(n) * n;
+}
+
 /// Solution of `H x = r` for the symmetric positive definite 3x3 `H` (its lower
 /// triangle is read) by its cofactors: x = adj(H) r / det(H), one division
 /// (this solve runs for every smooth vertex in every sweep; a Cholesky
@@ -124,6 +141,8 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 /// `target`, before each sweep, the unprojected target `pos + d` of each
 /// vertex, which every neighbour's solve reads up to three times (all three
 /// overwritten: the caller lends arrays it does not need meanwhile).
+/// With `p.tangential_sweeps`, each sweep keeps every displacement in the
+/// tangent plane of its vertex (see without_normal_component()).
 /// With `colours` (the smooth vertices of `nb` coloured by colour_vertices()),
 /// the sweeps are multicolour Gauss-Seidel sweeps (user manual, "Sweep
 /// Order"), which leave `buffer` alone; without, Jacobi sweeps (the paper's).
@@ -148,7 +167,8 @@ std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector
   target.resize((std::max)(target.size(), 3 * pos.size()));
   const auto update = [&](std::size_t v) {
     const Vec3 d_new = minimize_penalty_function(m, pos, d, target, beta, v, p);
-    return Vec3(p.relax2 * d_new + (1. - p.relax2) * d[v]);
+    const Vec3 mixed = p.relax2 * d_new + (1. - p.relax2) * d[v];
+    return p.tangential_sweeps ? without_normal_component(m, pos, v, mixed) : mixed;
   };
   const auto set_target = [&](std::size_t w) {
     Eigen::Map<Vec3> at(&target[3 * w]);
@@ -162,21 +182,15 @@ std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector
 }
 
 /// Removes from `d[v]`, for each vertex `v` of `vertices`, its component along
-/// the area-weighted normal of its faces at `pos` (user manual, "Fewer, Longer
-/// Iterations"): the move stays in the tangent plane, and the projection onto
-/// the input only corrects the curvature. A vertex whose faces have no area
-/// keeps its displacement.
+/// its normal (see without_normal_component()): once after the sweeps of the
+/// penalty step, where they do not remove it themselves (user manual,
+/// "Tangential Sweeps").
 template <class ConcurrencyTag>
 void remove_normal_components(const Flat_mesh& m, const std::vector<Vec3>& pos, const std::vector<Index>& vertices,
                               std::vector<Vec3>& d) {
   parallel_for<ConcurrencyTag>(vertices.size(), [&](std::size_t i) {
     const std::size_t v = vertices[i];
-    Vec3 n = Vec3::Zero();
-    for (const Index* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) n += area_vector(pos, m.faces[*f]);
-    const double length = n.norm();
-    if (!(length > 0) || !std::isfinite(length)) return;
-    n /= length;
-    d[v] -= d[v].dot(n) * n;
+    d[v] = without_normal_component(m, pos, v, d[v]);
   });
 }
 

@@ -71,6 +71,8 @@ template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(
       choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), defaults::penalty_relaxation);
   penalty.gauss_seidel =
       choose_parameter(get_parameter(np, internal_np::ilsa_penalty_gauss_seidel), defaults::penalty_gauss_seidel);
+  penalty.tangential_sweeps = p.tangential && choose_parameter(get_parameter(np, internal_np::ilsa_tangential_sweeps),
+                                                               defaults::tangential_sweeps);
   penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), defaults::penalty_mu);
   penalty.length_weight = choose_parameter(get_parameter(np, internal_np::ilsa_length_weight), defaults::length_weight);
   penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), defaults::area_weight);
