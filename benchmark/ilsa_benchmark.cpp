@@ -28,10 +28,12 @@
 // N iterations) and its Hausdorff distance H to the input; then ILSA with its
 // defaults but the fidelity tolerance set to H, and the same with the paper's
 // classification (no crease contrast, no open-crease rule, candidates without
-// a sharp edge fixed); mean q, Hausdorff distance and its ratio to
-// H, flipped faces.
-// Also ILSA with every default: its Hausdorff distance over the default
-// fidelity tolerance. One run each (no time measured).
+// a sharp edge fixed), and the defaults with the fidelity bound also at the
+// input edges (ilsa_fidelity_input_edges); mean q, Hausdorff distance and its
+// ratio to H, flipped faces.
+// Also ILSA with every default, and with the bound at the input edges: its
+// Hausdorff distance over the default fidelity tolerance. One run each (no
+// time measured).
 // --crease-sets prints instead the connected sets of feature edges of each
 // mesh and what the open-crease rule drops (see run_crease_sets()).
 // --phases prints instead where ILSA's time goes, one thread, median of N
@@ -256,7 +258,8 @@ void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations)
   const double default_tolerance = PMP::internal::ILSA::defaults::fidelity_tolerance;
   std::cout << "| mesh | tangential relaxation: q / H / flipped | ILSA, tolerance H: q / H (/ peer's H) / flipped | "
                "ILSA, tolerance H, paper's classification: q / H (/ peer's H) / flipped | ILSA q - peer q "
-               "(paper's classification) | ILSA defaults: H / tolerance |\n|---|---|---|---|---|---|\n";
+               "(paper's classification) | ILSA, tolerance H, bound at the input edges: q / H (/ peer's H) / "
+               "flipped | ILSA defaults: H / tolerance (bound at the input edges) |\n|---|---|---|---|---|---|---|\n";
   for (const std::string& file : files) {
     Mesh input;
     if (!read_input(file, input)) continue;
@@ -273,25 +276,29 @@ void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations)
     const Result p = measure(peer);
     // The defaults, or the paper's classification: every feature edge between
     // candidates sharp (no crease contrast, no open-crease rule), candidates
-    // without a sharp edge fixed.
-    auto ilsa = [&](bool paper) {
+    // without a sharp edge fixed; or the defaults with the bound at the input edges.
+    auto ilsa = [&](bool paper, bool input_edges) {
       namespace defaults = PMP::internal::ILSA::defaults;
       Mesh m = input;
       PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(
           m, CGAL::parameters::ilsa_fidelity_tolerance(p.h)
                  .ilsa_crease_contrast(paper ? 0. : defaults::crease_contrast)
                  .ilsa_minimum_open_crease_edges(paper ? 0u : defaults::minimum_open_crease_edges)
-                 .ilsa_fix_unattached_candidates(paper || defaults::fix_unattached_candidates));
+                 .ilsa_fix_unattached_candidates(paper || defaults::fix_unattached_candidates)
+                 .ilsa_fidelity_input_edges(input_edges));
       return measure(m);
     };
-    const Result a = ilsa(false), b = ilsa(true);
-    Mesh defaults = input;
+    const Result a = ilsa(false, false), b = ilsa(true, false), e = ilsa(false, true);
+    Mesh defaults = input, edges_bounded = input;
     PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(defaults);
-    const Result d = measure(defaults);
+    PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(edges_bounded,
+                                                                   CGAL::parameters::ilsa_fidelity_input_edges(true));
+    const Result d = measure(defaults), de = measure(edges_bounded);
     std::printf("| %s | %.4f / %.2e / %zu | %.4f / %.2e (%.2f) / %zu | %.4f / %.2e (%.2f) / %zu | %+.4f (%+.4f) | "
-                "%.2e / %.2f |\n",
+                "%.4f / %.2e (%.2f) / %zu | %.2e / %.2f (%.2e / %.2f) |\n",
                 std::filesystem::path(file).filename().string().c_str(), p.q, p.h, p.flipped, a.q, a.h, a.h / p.h,
-                a.flipped, b.q, b.h, b.h / p.h, b.flipped, a.q - p.q, b.q - p.q, d.h, d.h / default_tolerance);
+                a.flipped, b.q, b.h, b.h / p.h, b.flipped, a.q - p.q, b.q - p.q, e.q, e.h, e.h / p.h, e.flipped, d.h,
+                d.h / default_tolerance, de.h, de.h / default_tolerance);
     std::fflush(stdout);
   }
 }

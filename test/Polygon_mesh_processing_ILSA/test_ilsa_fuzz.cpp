@@ -21,7 +21,9 @@
 //   aspect ratio of its star (worsening moves rejected); in a run on vertices
 //   four edges apart (drawn in a fifth of the cases with the safety check),
 //   every input vertex within the fidelity tolerance of the result and the
-//   face points the package measures within it of the input, and no star with
+//   face points the package measures within it of the input (with
+//   `ilsa_fidelity_input_edges`, drawn in a quarter of the cases, also the
+//   points of the input edges it measures), and no star with
 //   a lower mean aspect ratio; a run stopped by `ilsa_minimum_quality_gain`
 //   or `ilsa_minimum_remaining_gain` failed one of them in its last iteration
 //   and passed both in the one before (runs with one and two iterations fewer).
@@ -268,6 +270,10 @@ int main() {
     // cases, from a generator of its own.
     std::mt19937 tangent_rng(86028121u + unsigned(c));
     const bool tangential_sweeps = unit(tangent_rng) >= 0.25;
+    // The fidelity bound also at the input edges in a quarter of the cases,
+    // from a generator of its own.
+    std::mt19937 edges_rng(67867967u + unsigned(c));
+    const bool input_edges = unit(edges_rng) < 0.25;
 
     // A fifth of the cases stop through the callback, after the iteration that
     // reaches `stop_after` (drawn from a generator of its own, so that the
@@ -303,6 +309,7 @@ int main() {
                   .ilsa_crease_contrast(contrast)
                   .ilsa_minimum_open_crease_edges(open_edges)
                   .ilsa_fidelity_tolerance(tolerance)
+                  .ilsa_fidelity_input_edges(input_edges)
                   .ilsa_minimum_quality_gain(gain)
                   .ilsa_minimum_remaining_gain(remaining_gain)
                   .ilsa_retry_distance(retry)
@@ -545,7 +552,9 @@ int main() {
     // per-move promises become global ones. Every input vertex ends within the
     // fidelity tolerance of the result, the centroid and edge midpoints of every
     // face within it of the input (the package measures to faces near them, at
-    // least as far as the whole surface), and, with worsening moves rejected,
+    // least as far as the whole surface), with `ilsa_fidelity_input_edges` the
+    // points 1/4, 1/2 and 3/4 of the way along the input edges of each moved
+    // vertex and opposite to it within it of the result, and, with worsening moves rejected,
     // no star ends with a lower mean aspect ratio (a move per iteration, each
     // not lowering it).
     std::mt19937 isolated_rng(104729u + unsigned(c));
@@ -558,7 +567,12 @@ int main() {
       using Tree = AABB_tree_3<K, CGAL::AABB_face_graph_triangle_primitive<Surface_mesh>>;
       const Tree input_tree(faces(original).first, faces(original).second, original);
       const Tree result_tree(faces(x).first, faces(x).second, x);
-      double vertex_worst = 0, face_worst = 0;
+      double vertex_worst = 0, face_worst = 0, edge_worst = 0;
+      auto measure_edge = [&](vd a, vd b) {
+        const Point p = original.point(a), q = original.point(b);
+        for (double t : {0.25, 0.5, 0.75})
+          edge_worst = (std::max)(edge_worst, std::sqrt(result_tree.squared_distance(p + t * (q - p))));
+      };
       for (vd v : isolated) {
         if (x.point(v) == original.point(v)) continue;
         ++isolated_moves;
@@ -578,15 +592,22 @@ int main() {
           for (const Point& q : {CGAL::centroid(p[0], p[1], p[2]), CGAL::midpoint(p[0], p[1]),
                                  CGAL::midpoint(p[1], p[2]), CGAL::midpoint(p[2], p[0])})
             face_worst = (std::max)(face_worst, std::sqrt(input_tree.squared_distance(q)));
+          if (input_edges) { // the edge of the face opposite to `v`
+            const auto h = CGAL::halfedge(fa, x);
+            const auto opposite = source(h, x) == v ? next(h, x) : target(h, x) == v ? prev(h, x) : h;
+            measure_edge(source(opposite, x), target(opposite, x));
+          }
         }
+        if (input_edges)
+          for (vd w : CGAL::vertices_around_target(x.halfedge(v), x)) measure_edge(v, w);
       }
       isolated_ok = isolated_ok && vertex_worst / diagonal <= tolerance + rounding &&
-                    face_worst / diagonal <= tolerance + rounding;
+                    face_worst / diagonal <= tolerance + rounding && edge_worst / diagonal <= tolerance + rounding;
       if (!isolated_ok)
         std::cout << "case " << c << ", vertices four edges apart: " << isolated.size() << " in the range, "
                   << stats.number_of_iterations << " iterations, input vertex to the result " << vertex_worst / diagonal
-                  << ", face points to the input " << face_worst / diagonal << " (tolerance " << tolerance << ")"
-                  << std::endl;
+                  << ", face points to the input " << face_worst / diagonal << ", input edge points to the result "
+                  << edge_worst / diagonal << " (tolerance " << tolerance << ")" << std::endl;
     }
     // The convergence stops: a run that ended before its cap and its callback's
     // stop gained less than the minimum in its last iteration or, times the
@@ -634,13 +655,13 @@ int main() {
                 << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa << ", angle " << angle << ", fix " << fix
                 << ", floor " << (default_floor ? -1. : floor) << ", monotone " << monotone << ", reject worsening "
                 << reject_worsening << ", kink " << kink << ", crease contrast " << contrast << ", open crease edges "
-                << open_edges << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain "
-                << remaining_gain << ", retry distance " << retry << ", project " << project << ", safety " << safety
-                << ", range " << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map
-                << ", relax " << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges "
-                << collapsed_edges << ", zero-area input faces opened reversed " << reversed << ", distance "
-                << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
-                << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
+                << open_edges << ", tolerance " << tolerance << ", input edges " << input_edges << ", gain " << gain
+                << ", remaining gain " << remaining_gain << ", retry distance " << retry << ", project " << project
+                << ", safety " << safety << ", range " << use_range << ", vertex map " << use_vertex_map
+                << ", edge map " << use_edge_map << ", relax " << relax << "): flipped " << f.number_of_flipped_faces
+                << ", collapsed edges " << collapsed_edges << ", zero-area input faces opened reversed " << reversed
+                << ", distance " << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite "
+                << non_finite << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
                 << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
                 << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
                 << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "

@@ -2,7 +2,8 @@
 // CGAL::Parallel_tag gives the same points, bit for bit, as the sequential
 // run, whatever the number of threads; on several meshes, with the
 // whole-mesh and the vertex-range overloads, with constraint maps, with the
-// Gauss-Seidel sweeps of the penalty step, on Surface_mesh and Polyhedron_3. Without TBB, Parallel_if_available_tag
+// Gauss-Seidel sweeps of the penalty step, with the fidelity bound at the
+// input edges, on Surface_mesh and Polyhedron_3. Without TBB, Parallel_if_available_tag
 // runs sequentially and the same comparison holds.
 #include "ilsa_test_utils.h"
 
@@ -68,6 +69,18 @@ template <class Mesh> void test_meshes() {
             m, CGAL::parameters::number_of_iterations(4).ilsa_penalty_gauss_seidel(true));
       },
       "fandisk, Gauss-Seidel penalty sweeps");
+  // The fidelity bound at the input edges (user manual, "Fidelity at Input
+  // Edges"): in each round an edge is measured once, by the vertex of lowest
+  // index among those it concerns.
+  Mesh elephant = read_mesh<Mesh>(data_file("elephant.off"));
+  perturb_on_surface(elephant, 0.5, 14);
+  compare(
+      elephant,
+      [](Mesh& m, auto tag) {
+        return PMP::smooth_surface_mesh_ilsa<decltype(tag)>(
+            m, CGAL::parameters::number_of_iterations(4).ilsa_fidelity_input_edges(true));
+      },
+      "elephant, fidelity bound at the input edges");
 }
 
 // The other paths of the loop: the paper's acceptance without fidelity bound,

@@ -890,7 +890,9 @@ template <class Mesh> void test_collapsed_faces_open_right_way() {
 // Fidelity tolerance: no input vertex ends farther from the smoothed surface
 // than the tolerance, and no face centroid or edge midpoint farther from the
 // input surface. Without the bound (the paper's variant) the same run on the
-// same organic mesh goes well beyond it, so the check has work to do.
+// same organic mesh goes well beyond it, so the check has work to do. The
+// points 1/4, 1/2 and 3/4 of the way along the input edges go beyond it with
+// the default check, and stay within it with ilsa_fidelity_input_edges(true).
 template <class Mesh> void test_fidelity_tolerance() {
   const Mesh original = read_mesh<Mesh>(data_file("elephant.off"));
   const double diagonal = bbox_diagonal(original), tolerance = 3e-4;
@@ -907,29 +909,40 @@ template <class Mesh> void test_fidelity_tolerance() {
   auto deviations = [&](const Mesh& smoothed) {
     std::vector<K::Triangle_3> input = triangles_of(original), output = triangles_of(smoothed);
     Tree input_tree(input.begin(), input.end()), output_tree(output.begin(), output.end());
-    double vertices_to_output = 0, faces_to_input = 0;
+    double vertices_to_output = 0, faces_to_input = 0, edges_to_output = 0;
     for (const Point& p : points_of(original))
       vertices_to_output = (std::max)(vertices_to_output, std::sqrt(output_tree.squared_distance(p)));
     for (const auto& t : output)
       for (const Point& x :
            {CGAL::centroid(t), CGAL::midpoint(t[0], t[1]), CGAL::midpoint(t[1], t[2]), CGAL::midpoint(t[2], t[0])})
         faces_to_input = (std::max)(faces_to_input, std::sqrt(input_tree.squared_distance(x)));
-    return std::make_pair(vertices_to_output / diagonal, faces_to_input / diagonal);
+    for (auto e : edges(original)) {
+      const Point p = get(CGAL::vertex_point, original, source(e, original));
+      const Point q = get(CGAL::vertex_point, original, target(e, original));
+      for (double t : {0.25, 0.5, 0.75})
+        edges_to_output = (std::max)(edges_to_output, std::sqrt(output_tree.squared_distance(p + t * (q - p))));
+    }
+    return std::array<double, 3>{vertices_to_output / diagonal, faces_to_input / diagonal, edges_to_output / diagonal};
   };
-  Mesh bounded = original, unbounded = original;
+  Mesh bounded = original, unbounded = original, edges_bounded = original;
   PMP::smooth_surface_mesh_ilsa(bounded, CGAL::parameters::ilsa_fidelity_tolerance(tolerance));
   PMP::smooth_surface_mesh_ilsa(unbounded,
                                 CGAL::parameters::ilsa_fidelity_tolerance(std::numeric_limits<double>::infinity()));
-  const auto b = deviations(bounded), u = deviations(unbounded);
-  std::cout << "fidelity tolerance " << tolerance << ": input vertices to output " << b.first
-            << ", output faces to input " << b.second << "; without the bound " << u.first << ", " << u.second
-            << std::endl;
+  PMP::smooth_surface_mesh_ilsa(edges_bounded,
+                                CGAL::parameters::ilsa_fidelity_tolerance(tolerance).ilsa_fidelity_input_edges(true));
+  const auto b = deviations(bounded), u = deviations(unbounded), e = deviations(edges_bounded);
+  std::cout << "fidelity tolerance " << tolerance << ": input vertices to output " << b[0] << ", output faces to input "
+            << b[1] << ", input edges to output " << b[2] << "; without the bound " << u[0] << ", " << u[1] << ", "
+            << u[2] << "; with the bound at the input edges " << e[0] << ", " << e[1] << ", " << e[2] << std::endl;
   // The package measures in coordinates divided by the diagonal; allow for
   // the rounding of that change of scale, nothing more.
   const double rounding = 1e-9 * tolerance;
-  assert(b.first <= tolerance + rounding && b.second <= tolerance + rounding);
-  assert(u.first > 2 * tolerance && u.second > 2 * tolerance);
-  assert(PMP::mesh_quality_ilsa(bounded).mean_aspect_ratio > PMP::mesh_quality_ilsa(original).mean_aspect_ratio);
+  assert(b[0] <= tolerance + rounding && b[1] <= tolerance + rounding);
+  assert(u[0] > 2 * tolerance && u[1] > 2 * tolerance);
+  assert(b[2] > tolerance + rounding);
+  assert(e[0] <= tolerance + rounding && e[1] <= tolerance + rounding && e[2] <= tolerance + rounding);
+  for (const Mesh* m : {&bounded, &edges_bounded})
+    assert(PMP::mesh_quality_ilsa(*m).mean_aspect_ratio > PMP::mesh_quality_ilsa(original).mean_aspect_ratio);
 }
 
 // Default quality floor: the output's minimum aspect ratio is never below the
@@ -1239,6 +1252,7 @@ void test_documented_defaults() {
                                               {"ilsa_quality_monotone", defaults::quality_monotone},
                                               {"ilsa_reject_worsening_moves", defaults::reject_worsening_moves},
                                               {"ilsa_fidelity_tolerance", defaults::fidelity_tolerance},
+                                              {"ilsa_fidelity_input_edges", defaults::fidelity_input_edges},
                                               {"ilsa_retry_distance", defaults::retry_distance},
                                               {"ilsa_quality_threshold", defaults::quality_threshold}};
   std::size_t checked = 0;
@@ -1322,6 +1336,7 @@ void test_documented_defaults() {
                                                       {"--min-open-crease-edges", "ilsa_minimum_open_crease_edges"},
                                                       {"--reject-worsening", "ilsa_reject_worsening_moves"},
                                                       {"--fidelity-tolerance", "ilsa_fidelity_tolerance"},
+                                                      {"--fidelity-input-edges", "ilsa_fidelity_input_edges"},
                                                       {"--retry-distance", "ilsa_retry_distance"}};
     for (const auto& [flag, name] : flags) {
       const std::size_t at = text.find("\"  " + flag + " ");
@@ -1337,7 +1352,7 @@ void test_documented_defaults() {
   std::cout << "documented defaults: " << checked << " statements agree with internal/ILSA/defaults.h (reference "
             << smoother << " + " << classification << " + " << quality << ", manual " << manual << ", tool " << tool
             << ")" << std::endl;
-  assert(smoother >= 20 && classification >= 4 && quality >= 4 && manual >= 20 && tool == 20);
+  assert(smoother >= 20 && classification >= 4 && quality >= 4 && manual >= 20 && tool == 21);
 }
 
 int main() {

@@ -291,7 +291,21 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  * normals are more than `ilsa_feature_angle` apart (those the crease contrast and the open-crease rule keep) may not
  * move farther than it from their input position, nor their input points end farther than it from them. Relative to the
  * bounding-box diagonal. `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no
- * such bound)} \cgalParamType{`double`, positive} \cgalParamDefault{`3e-4`} \cgalParamNEnd \cgalParamNBegin{callback}
+ * such bound). Between the points it measures the distance can be larger: the sampled Hausdorff distance reaches
+ * about twice the tolerance on coarse curved meshes (user manual, "Known Limitations")}
+ *     \cgalParamType{`double`, positive}
+ *     \cgalParamDefault{`3e-4`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{ilsa_fidelity_input_edges}
+ *     \cgalParamDescription{with `ilsa_fidelity_tolerance` finite, whether the bound also holds at the points 1/4, 1/2
+ * and 3/4 of the way along each input edge: their distance to the smoothed faces around the edge's ends (user manual,
+ * "Fidelity at Input Edges"). Between the input vertices the input surface can lie farther from the smoothed one than
+ * the vertices do; measuring these points brings the sampled Hausdorff distance closer to the tolerance, at the cost
+ * of a slower safety check. Not in the paper}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{callback}
  *     \cgalParamDescription{called after each iteration with the advancement, the iterations run over
  * `number_of_iterations` (the last call may come before 1 when the run stops early); when it returns `false`, the
  * run stops there, with the mesh as that iteration left it (every guarantee holds after any iteration)}

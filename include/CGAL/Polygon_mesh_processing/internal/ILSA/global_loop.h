@@ -47,7 +47,7 @@ public:
       : m_(original), nb_(neighborhoods), p_(parameters), penalty_(parameters.penalty),
         projector_(original, classification, incidences, ConcurrencyTag()),
         safety_(original, classification, incidences, projector_, floor_of_check(original, parameters),
-                parameters.fidelity_tolerance, parameters.reject_worsening, 3),
+                parameters.fidelity_tolerance, parameters.reject_worsening, 3, parameters.fidelity_input_edges),
         face_values_(original.number_of_faces()) {
     double mean_edge_length = 0;
     for (const auto& e : m_.edges) mean_edge_length += (m_.points[e[0]] - m_.points[e[1]]).norm();

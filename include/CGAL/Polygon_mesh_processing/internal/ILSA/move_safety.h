@@ -6,7 +6,9 @@
 // the worst triangle around a moved vertex may not get worse if it ends below
 // the quality floor, and the smoothed surface may not move away from an input
 // vertex by more than the fidelity tolerance (it may not cut off a bump or a
-// crease bend of the input), nor a crease polyline from the input crease.
+// crease bend of the input), nor a crease polyline from the input crease;
+// optionally (`ilsa_fidelity_input_edges`) not from inner points of the input
+// edges either.
 // A vertex of an offending triangle has its move halved (and re-projected) a
 // few times, then dropped for this iteration. Since the moves are applied all
 // at once (Jacobi), the check is repeated until no triangle offends; it ends
@@ -67,14 +69,18 @@ public:
   /// that a move may create or increase; infinity disables the check.
   /// `reject_worsening`: drop a move that lowers the mean aspect ratio of the
   /// vertex's star, the neighbours being at their new positions.
+  /// `input_edges`: the fidelity bound also holds at the points 1/4, 1/2 and
+  /// 3/4 of the way along the input edges of a moved vertex
+  /// (`ilsa_fidelity_input_edges`, input_edge_deviates()).
   /// `original`, `classification` and `projector` (its bounding balls of the
   /// input faces spare distances) must outlive the check: it keeps references.
   /// `incidences` (those of `original`) is read here only.
   Move_safety(const Flat_mesh& original, const Vertex_classification& classification,
               const Set_up_incidences& incidences, const Projector& projector, double quality_floor,
-              double fidelity_tolerance, bool reject_worsening, std::size_t halvings)
+              double fidelity_tolerance, bool reject_worsening, std::size_t halvings, bool input_edges = false)
       : m_(original), c_(classification), projector_(projector), quality_floor_(quality_floor),
         fidelity_tolerance_(fidelity_tolerance), reject_worsening_(reject_worsening),
+        input_edges_(input_edges && std::isfinite(fidelity_tolerance)),
         halvings_((std::min)(halvings, std::size_t(100))) {
     // Reference orientation of each face (see reference()): for a face that is
     // degenerate in the input, the sum of its neighbours' normals, stored.
@@ -115,6 +121,7 @@ public:
     checked_.assign(m_.number_of_vertices(), 0);
     is_moved_.assign(m_.number_of_vertices(), 0);
     above_floor_.assign(m_.number_of_vertices(), 0);
+    measured_.assign(input_edges_ ? m_.number_of_vertices() : 0, 0);
   }
 
   struct Counts {
@@ -389,6 +396,8 @@ private:
       if (tries_[v] <= halvings_) to_measure[kept++] = Index(v);
     }
     to_measure.resize(kept);
+    if (input_edges_)
+      for (std::size_t v : to_measure) measured_[v] = 1;
     parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
       const std::size_t v = to_measure[i];
       auto share = [&](std::size_t w) {
@@ -410,11 +419,13 @@ private:
     parallel_for<ConcurrencyTag>(to_measure.size(), [&](std::size_t i) {
       const std::size_t v = to_measure[i];
       bad_[v] = 0;
-      if (deviates(previous, v))
+      if (deviates(previous, v) || (input_edges_ && input_edge_deviates(previous, next, v)))
         failed(v, Test::fidelity);
       else if (crease_deviates(previous, previous_home, next, next_home, v))
         failed(v, Test::crease);
     });
+    if (input_edges_)
+      for (std::size_t v : to_measure) measured_[v] = 0;
   }
 
   // --- The shortening -------------------------------------------------------
@@ -528,6 +539,59 @@ private:
       if (!(now > fidelity_tolerance_)) continue;
       std::array<Witness, 4> witnesses = face_witness_[*f];
       if (now > face_deviation(previous, *f, witnesses)) return true;
+    }
+    return false;
+  }
+
+  // The fidelity bound at the input edges (`ilsa_fidelity_input_edges`; user
+  // manual, "Fidelity at Input Edges"): the points 1/4, 1/2 and 3/4 of the way
+  // along an input edge may not end farther than the tolerance from the
+  // smoothed surface around the edge's ends, unless they already were.
+  // Between the input vertices, which deviates() measures, the input surface
+  // can lie farther from the smoothed one. The move of `v` changes the faces
+  // around its edges and around the edges opposite to it in its faces: these
+  // are measured, each edge in a round once, by the vertex of lowest index
+  // among those measured in the round that it concerns (its ends and the
+  // vertices opposite to it), whose move an edge that fails shortens.
+  bool input_edge_deviates(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t v) const {
+    for (const Index* u = m_.vertex_neighbors.first(v); u != m_.vertex_neighbors.last(v); ++u)
+      if (input_edge_cut(previous, next, v, v, *u)) return true;
+    for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+      const auto& t = m_.faces[*f];
+      const std::size_t i = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+      if (input_edge_cut(previous, next, v, t[(i + 1) % 3], t[(i + 2) % 3])) return true;
+    }
+    return false;
+  }
+
+  // Whether the input edge from `a` to `b`, measured for the move of `v`, is
+  // cut off (input_edge_deviates()). The points of an edge share a witness:
+  // they lie near the same faces.
+  bool input_edge_cut(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, std::size_t v, std::size_t a,
+                      std::size_t b) const {
+    if (measured_by_lower(v, a, b)) return false;
+    const std::array<std::size_t, 2> ends{a, b};
+    Witness witness = no_witness;
+    for (int k = 1; k < input_edge_parts; ++k) {
+      const Vec3 x = m_.points[a] + (double(k) / input_edge_parts) * (m_.points[b] - m_.points[a]);
+      const double now = std::sqrt(squared_distance_near(x, next, ends, witness));
+      if (!(now > fidelity_tolerance_)) continue;
+      Witness before = no_witness;
+      if (now > std::sqrt(squared_distance_near(x, previous, ends, before))) return true;
+    }
+    return false;
+  }
+
+  // Whether a vertex of lower index than `v` measured in this round concerns
+  // the edge from `a` to `b`: one of its ends, or of the vertices opposite to
+  // it in its faces.
+  bool measured_by_lower(std::size_t v, std::size_t a, std::size_t b) const {
+    auto lower = [&](std::size_t w) { return w < v && measured_[w]; };
+    if (lower(a) || lower(b)) return true;
+    for (const Index* f = m_.vertex_faces.first(a); f != m_.vertex_faces.last(a); ++f) {
+      const auto& t = m_.faces[*f];
+      if (t[0] != b && t[1] != b && t[2] != b) continue;
+      if (lower(std::size_t(t[0]) + t[1] + t[2] - a - b)) return true;
     }
     return false;
   }
@@ -780,6 +844,8 @@ private:
   double quality_floor_;
   double fidelity_tolerance_;
   bool reject_worsening_;
+  bool input_edges_;                         // the fidelity bound also at the input edges (input_edge_deviates())
+  static constexpr int input_edge_parts = 4; // the points measured: k / 4 of the way along, 0 < k < 4
   std::size_t halvings_;
   std::vector<Index> degenerate_faces_;              // faces degenerate in the input, in increasing order
   std::vector<Vec3> degenerate_references_;          // their reference orientations
@@ -805,6 +871,7 @@ private:
                                            // has one, and one after each shortening before its fidelity tests):
                                            // it failed the quality floor in a star at or above the floor
   std::vector<std::uint32_t> dropped_in_;  // per vertex: the last call of enforce() that dropped its move
+  std::vector<unsigned char> measured_;    // per vertex, with input_edges_: in the round's fidelity tests
   Round round_ = 0;
   Round first_round_ = 1;  // the first round of the current call of enforce()
   std::uint32_t call_ = 0; // calls of enforce() so far

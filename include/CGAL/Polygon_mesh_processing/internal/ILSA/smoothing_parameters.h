@@ -88,6 +88,8 @@ template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(
       choose_parameter(get_parameter(np, internal_np::ilsa_reject_worsening_moves), defaults::reject_worsening_moves);
   p.fidelity_tolerance =
       choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), defaults::fidelity_tolerance);
+  p.fidelity_input_edges =
+      choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_input_edges), defaults::fidelity_input_edges);
   p.minimum_gain =
       choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), defaults::minimum_quality_gain);
   p.minimum_remaining_gain =
