@@ -47,40 +47,28 @@ template <class Mesh, class Smooth> void compare(const Mesh& input, const Smooth
   }
 }
 
+// `file` perturbed along its surface with `seed`, smoothed with the named
+// parameters `np`, compared as compare() does.
+template <class Mesh, class NamedParameters>
+void compare_perturbed(const char* file, unsigned seed, const NamedParameters& np, const char* what) {
+  Mesh input = read_mesh<Mesh>(data_file(file));
+  perturb_on_surface(input, 0.5, seed);
+  compare(
+      input, [&np](Mesh& m, auto tag) { return PMP::smooth_surface_mesh_ilsa<decltype(tag)>(m, np); }, what);
+}
+
 template <class Mesh> void test_meshes() {
-  for (const char* name : {"fandisk.off", "elephant.off", "mech-holes-shark.off", "hemisphere.off"}) {
-    Mesh input = read_mesh<Mesh>(data_file(name));
-    perturb_on_surface(input, 0.5, 11);
-    compare(
-        input,
-        [](Mesh& m, auto tag) {
-          return PMP::smooth_surface_mesh_ilsa<decltype(tag)>(m, CGAL::parameters::number_of_iterations(5));
-        },
-        name);
-  }
+  for (const char* name : {"fandisk.off", "elephant.off", "mech-holes-shark.off", "hemisphere.off"})
+    compare_perturbed<Mesh>(name, 11, CGAL::parameters::number_of_iterations(5), name);
   // Multicolour Gauss-Seidel sweeps of the penalty step (user manual, "Sweep
   // Order"): each colour is a parallel loop.
-  Mesh input = read_mesh<Mesh>(data_file("fandisk.off"));
-  perturb_on_surface(input, 0.5, 13);
-  compare(
-      input,
-      [](Mesh& m, auto tag) {
-        return PMP::smooth_surface_mesh_ilsa<decltype(tag)>(
-            m, CGAL::parameters::number_of_iterations(4).ilsa_penalty_gauss_seidel(true));
-      },
-      "fandisk, Gauss-Seidel penalty sweeps");
+  compare_perturbed<Mesh>("fandisk.off", 13, CGAL::parameters::number_of_iterations(4).ilsa_penalty_gauss_seidel(true),
+                          "fandisk, Gauss-Seidel penalty sweeps");
   // The fidelity bound at the input edges (user manual, "Fidelity at Input
   // Edges"): in each round an edge is measured once, by the vertex of lowest
   // index among those it concerns.
-  Mesh elephant = read_mesh<Mesh>(data_file("elephant.off"));
-  perturb_on_surface(elephant, 0.5, 14);
-  compare(
-      elephant,
-      [](Mesh& m, auto tag) {
-        return PMP::smooth_surface_mesh_ilsa<decltype(tag)>(
-            m, CGAL::parameters::number_of_iterations(4).ilsa_fidelity_input_edges(true));
-      },
-      "elephant, fidelity bound at the input edges");
+  compare_perturbed<Mesh>("elephant.off", 14, CGAL::parameters::number_of_iterations(4).ilsa_fidelity_input_edges(true),
+                          "elephant, fidelity bound at the input edges");
 }
 
 // The other paths of the loop: the paper's acceptance without fidelity bound,
