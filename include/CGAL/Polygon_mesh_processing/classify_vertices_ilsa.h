@@ -128,4 +128,4 @@ ILSA_statistics classify_vertices_ilsa(const TriangleMesh& tm, VertexTypeMap ver
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_CLASSIFY_VERTICES_ILSA_H

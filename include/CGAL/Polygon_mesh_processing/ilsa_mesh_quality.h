@@ -14,4 +14,4 @@
 
 #include <CGAL/Polygon_mesh_processing/mesh_quality_ilsa.h>
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_ILSA_MESH_QUALITY_H

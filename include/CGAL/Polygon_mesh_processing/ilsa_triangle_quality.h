@@ -14,4 +14,4 @@
 
 #include <CGAL/Polygon_mesh_processing/triangle_quality_ilsa.h>
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_ILSA_TRIANGLE_QUALITY_H

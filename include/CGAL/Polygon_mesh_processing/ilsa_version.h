@@ -11,4 +11,4 @@
 /// Version of the package, "major.minor.patch".
 #define CGAL_PMP_ILSA_VERSION "1.0.0"
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_ILSA_VERSION_H

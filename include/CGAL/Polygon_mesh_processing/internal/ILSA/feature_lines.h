@@ -116,4 +116,4 @@ inline constexpr int crease_samples = 8;
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FEATURE_LINES_H

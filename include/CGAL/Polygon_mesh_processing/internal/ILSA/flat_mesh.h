@@ -37,13 +37,14 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
-using Vec3 = Eigen::Vector3d;
 /// Index of a vertex, face or edge in the flat mesh: 32 bits, half the memory of
 /// `std::size_t` (build_flat_mesh() rejects a mesh with more elements).
 using Index = std::uint32_t;
 /// No element (a border edge's missing face, no home yet). Compares equal to
 /// itself also after conversion to `std::size_t`.
 constexpr Index npos = (std::numeric_limits<Index>::max)();
+/// A point or a vector of the flat mesh (coordinates, displacements, normals).
+using Vec3 = Eigen::Vector3d;
 
 /// Compressed adjacency: the items of element `i` are `items[begin[i]] .. items[begin[i+1]-1]`.
 struct Adjacency {
@@ -491,4 +492,4 @@ void write_back(const Flat_mesh& original, const std::vector<Vec3>& pos, const s
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FLAT_MESH_H

@@ -273,4 +273,4 @@ std::vector<Vec3> smooth_flat_copy(const Flat_mesh& original, const Vertex_class
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_GLOBAL_LOOP_H

@@ -73,4 +73,4 @@ std::size_t compute_ilsa_displacement(const std::vector<Vec3>& pos, const ILSA_n
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_ILSA_DISPLACEMENT_H

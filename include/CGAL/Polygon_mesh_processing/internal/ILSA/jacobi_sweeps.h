@@ -120,4 +120,4 @@ std::size_t run_multicolour_sweeps(const Vertex_colours& colours, std::size_t sw
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_JACOBI_SWEEPS_H

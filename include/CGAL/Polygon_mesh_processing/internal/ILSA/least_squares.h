@@ -28,4 +28,4 @@ inline Vec3 solve_by_svd(const Eigen::Matrix3d& H, const Vec3& r, double relativ
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_LEAST_SQUARES_H

@@ -882,4 +882,4 @@ private:
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_MOVE_SAFETY_H

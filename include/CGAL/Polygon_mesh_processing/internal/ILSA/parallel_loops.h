@@ -116,4 +116,4 @@ private:
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PARALLEL_LOOPS_H

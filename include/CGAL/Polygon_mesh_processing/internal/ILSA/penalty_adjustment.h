@@ -199,4 +199,4 @@ void remove_normal_components(const Flat_mesh& m, const std::vector<Vec3>& pos, 
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PENALTY_ADJUSTMENT_H

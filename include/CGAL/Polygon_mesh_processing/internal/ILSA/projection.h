@@ -466,4 +466,4 @@ private:
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PROJECTION_H

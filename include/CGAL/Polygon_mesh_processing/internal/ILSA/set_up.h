@@ -157,4 +157,4 @@ Flat_input<TriangleMesh> classified_flat_copy(const TriangleMesh& tm, const Vert
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_SET_UP_H

@@ -54,49 +54,37 @@ inline void check_smoothing_parameters(const Smoothing_parameters& p, double ite
 
 /// Reads the smoothing parameters of `np`; throws `ILSA_error` for a value out of range.
 template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(const NamedParameters& np) {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  // The value of the parameter `tag` in `np`, or else `fallback`.
+  const auto read = [&np](auto tag, auto fallback) {
+    return parameters::choose_parameter(parameters::get_parameter(np, tag), fallback);
+  };
   Smoothing_parameters p;
-  const auto iterations =
-      choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::number_of_iterations);
-  const auto sweeps = choose_parameter(get_parameter(np, internal_np::number_of_relaxation_steps),
-                                       defaults::number_of_relaxation_steps);
-  const auto penalty_sweeps =
-      choose_parameter(get_parameter(np, internal_np::ilsa_penalty_steps), defaults::penalty_steps);
-  p.tangential =
-      choose_parameter(get_parameter(np, internal_np::ilsa_tangential_displacement), defaults::tangential_displacement);
-  p.relax1 = choose_parameter(get_parameter(np, internal_np::ilsa_relaxation), defaults::relaxation);
+  const auto iterations = read(internal_np::number_of_iterations, defaults::number_of_iterations);
+  const auto sweeps = read(internal_np::number_of_relaxation_steps, defaults::number_of_relaxation_steps);
+  const auto penalty_sweeps = read(internal_np::ilsa_penalty_steps, defaults::penalty_steps);
+  p.tangential = read(internal_np::ilsa_tangential_displacement, defaults::tangential_displacement);
+  p.relax1 = read(internal_np::ilsa_relaxation, defaults::relaxation);
   Penalty_parameters& penalty = p.penalty;
-  penalty.relax2 =
-      choose_parameter(get_parameter(np, internal_np::ilsa_penalty_relaxation), defaults::penalty_relaxation);
-  penalty.gauss_seidel =
-      choose_parameter(get_parameter(np, internal_np::ilsa_penalty_gauss_seidel), defaults::penalty_gauss_seidel);
-  penalty.tangential_sweeps = p.tangential && choose_parameter(get_parameter(np, internal_np::ilsa_tangential_sweeps),
-                                                               defaults::tangential_sweeps);
-  penalty.mu = choose_parameter(get_parameter(np, internal_np::ilsa_penalty_mu), defaults::penalty_mu);
-  penalty.length_weight = choose_parameter(get_parameter(np, internal_np::ilsa_length_weight), defaults::length_weight);
-  penalty.area_weight = choose_parameter(get_parameter(np, internal_np::ilsa_area_weight), defaults::area_weight);
-  p.do_project = choose_parameter(get_parameter(np, internal_np::do_project), defaults::do_project);
-  p.use_safety =
-      choose_parameter(get_parameter(np, internal_np::use_safety_constraints), defaults::use_safety_constraints);
+  penalty.relax2 = read(internal_np::ilsa_penalty_relaxation, defaults::penalty_relaxation);
+  penalty.gauss_seidel = read(internal_np::ilsa_penalty_gauss_seidel, defaults::penalty_gauss_seidel);
+  penalty.tangential_sweeps = p.tangential && read(internal_np::ilsa_tangential_sweeps, defaults::tangential_sweeps);
+  penalty.mu = read(internal_np::ilsa_penalty_mu, defaults::penalty_mu);
+  penalty.length_weight = read(internal_np::ilsa_length_weight, defaults::length_weight);
+  penalty.area_weight = read(internal_np::ilsa_area_weight, defaults::area_weight);
+  p.do_project = read(internal_np::do_project, defaults::do_project);
+  p.use_safety = read(internal_np::use_safety_constraints, defaults::use_safety_constraints);
   p.raise_floor_to_input_minimum =
       parameters::is_default_parameter<NamedParameters, internal_np::ilsa_quality_floor_t>::value;
-  p.quality_floor = choose_parameter(get_parameter(np, internal_np::ilsa_quality_floor), defaults::quality_floor);
-  p.quality_monotone =
-      choose_parameter(get_parameter(np, internal_np::ilsa_quality_monotone), defaults::quality_monotone);
-  p.reject_worsening =
-      choose_parameter(get_parameter(np, internal_np::ilsa_reject_worsening_moves), defaults::reject_worsening_moves);
-  p.fidelity_tolerance =
-      choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_tolerance), defaults::fidelity_tolerance);
-  p.fidelity_input_edges =
-      choose_parameter(get_parameter(np, internal_np::ilsa_fidelity_input_edges), defaults::fidelity_input_edges);
-  p.minimum_gain =
-      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_quality_gain), defaults::minimum_quality_gain);
-  p.minimum_remaining_gain =
-      choose_parameter(get_parameter(np, internal_np::ilsa_minimum_remaining_gain), defaults::minimum_remaining_gain);
-  p.retry_distance = choose_parameter(get_parameter(np, internal_np::ilsa_retry_distance), defaults::retry_distance);
-  p.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
-  p.callback = choose_parameter(get_parameter(np, internal_np::callback), std::function<bool(double)>());
+  p.quality_floor = read(internal_np::ilsa_quality_floor, defaults::quality_floor);
+  p.quality_monotone = read(internal_np::ilsa_quality_monotone, defaults::quality_monotone);
+  p.reject_worsening = read(internal_np::ilsa_reject_worsening_moves, defaults::reject_worsening_moves);
+  p.fidelity_tolerance = read(internal_np::ilsa_fidelity_tolerance, defaults::fidelity_tolerance);
+  p.fidelity_input_edges = read(internal_np::ilsa_fidelity_input_edges, defaults::fidelity_input_edges);
+  p.minimum_gain = read(internal_np::ilsa_minimum_quality_gain, defaults::minimum_quality_gain);
+  p.minimum_remaining_gain = read(internal_np::ilsa_minimum_remaining_gain, defaults::minimum_remaining_gain);
+  p.retry_distance = read(internal_np::ilsa_retry_distance, defaults::retry_distance);
+  p.verbose = read(internal_np::verbose, false);
+  p.callback = read(internal_np::callback, std::function<bool(double)>());
 
   check_smoothing_parameters(p, double(iterations), double(sweeps), double(penalty_sweeps));
   p.iterations = std::size_t(iterations);
@@ -110,4 +98,4 @@ template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_SMOOTHING_PARAMETERS_H

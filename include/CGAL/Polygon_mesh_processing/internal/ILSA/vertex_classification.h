@@ -286,4 +286,4 @@ CGAL_ILSA_CORE_INLINE Vertex_classification classify(const Flat_mesh& m, const S
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 
-#endif
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_VERTEX_CLASSIFICATION_H
