@@ -11,6 +11,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FLAT_MESH_H
 
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/vec3.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -18,9 +19,6 @@
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/number_utils.h>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry> // cross()
 
 #include <algorithm>
 #include <array>
@@ -43,8 +41,6 @@ using Index = std::uint32_t;
 /// No element (a border edge's missing face, no home yet). Compares equal to
 /// itself also after conversion to `std::size_t`.
 constexpr Index npos = (std::numeric_limits<Index>::max)();
-/// A point or a vector of the flat mesh (coordinates, displacements, normals).
-using Vec3 = Eigen::Vector3d;
 
 /// Compressed adjacency: the items of element `i` are `items[begin[i]] .. items[begin[i+1]-1]`.
 struct Adjacency {

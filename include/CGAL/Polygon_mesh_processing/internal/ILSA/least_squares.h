@@ -20,7 +20,8 @@ namespace ILSA {
 inline Vec3 solve_by_svd(const Eigen::Matrix3d& H, const Vec3& r, double relative_threshold) {
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
   svd.setThreshold(relative_threshold);
-  return svd.solve(r);
+  const Eigen::Vector3d x = svd.solve(Eigen::Vector3d(r[0], r[1], r[2]));
+  return Vec3(x[0], x[1], x[2]);
 }
 
 } // namespace ILSA

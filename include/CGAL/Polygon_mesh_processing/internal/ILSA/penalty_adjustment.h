@@ -96,7 +96,7 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
                                       const std::vector<double>& target, const std::vector<double>& beta, std::size_t v,
                                       const Penalty_parameters& p) {
   const Vec3& x0 = pos[v];
-  auto pending = [&](std::size_t w) -> Vec3 { return Eigen::Map<const Vec3>(&target[3 * w]) - x0; };
+  auto pending = [&](std::size_t w) -> Vec3 { return Vec3(target[3 * w], target[3 * w + 1], target[3 * w + 2]) - x0; };
 
   // Length term: ∇ = 2 wl (x − mean p_j).
   Eigen::Matrix3d H = 2. * p.length_weight * Eigen::Matrix3d::Identity();
@@ -171,8 +171,8 @@ std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector
     return p.tangential_sweeps ? without_normal_component(m, pos, v, mixed) : mixed;
   };
   const auto set_target = [&](std::size_t w) {
-    Eigen::Map<Vec3> at(&target[3 * w]);
-    at = pos[w] + d[w];
+    const Vec3 at = pos[w] + d[w];
+    for (int i = 0; i < 3; ++i) target[3 * w + i] = at[i];
   };
   const auto set_targets = [&] { parallel_for<ConcurrencyTag>(pos.size(), set_target); };
   if (colours == nullptr)

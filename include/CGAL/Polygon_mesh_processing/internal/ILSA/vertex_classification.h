@@ -37,7 +37,8 @@ template <class FaceNormal> Vec3 discrete_normal(const Flat_mesh& m, std::size_t
   Vec3 At1 = Vec3::Zero();
   for (const Index* f = m.vertex_faces.first(v); f != m.vertex_faces.last(v); ++f) {
     const Vec3 n = face_normal(std::size_t(*f));
-    AtA += n * n.transpose();
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) AtA(i, j) += n[j] * n[i]; // Eigen's order for AtA += n nᵀ
     At1 += n;
   }
   if (At1.isZero(0)) return Vec3::Zero();
