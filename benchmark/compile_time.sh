@@ -11,6 +11,10 @@
 #
 # Uses Debian's CGAL (/usr/include) unless CGAL_INCLUDE names another
 # include directory (e.g. ../shared/cgal-6.1.1/include). Flags: -O2 -std=c++17.
+# BASELINE_INCLUDE, when set, names the include directory of another version
+# of the package (e.g. of a `git worktree` of an earlier commit): each run then
+# also compiles the header-only program with it, in turn with the others, so
+# that a change's effect is measured in one run.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 runs=${1:-3}
@@ -31,8 +35,14 @@ time_of() { # sets `seconds` to the time one compilation takes; stops the script
   seconds=$(echo "$end - $start" | bc)
 }
 median() { sort -n | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
-ilsa_times=() core_user_times=() core_times=() peer_times=()
+ilsa_times=() core_user_times=() core_times=() peer_times=() baseline_times=()
+baseline=${BASELINE_INCLUDE:-}
 for ((i = 0; i < runs; ++i)); do
+  if [ -n "$baseline" ]; then
+    time_of "${common[@]}" -I"$baseline" "-DCGAL_ILSA_CGAL_PARAMETERS_INTERFACE=\"$interface\"" \
+      "$here/benchmark/compile_time/ilsa_call.cpp"
+    baseline_times+=("$seconds")
+  fi
   time_of "${common[@]}" "${ilsa[@]}" "$here/benchmark/compile_time/ilsa_call.cpp"
   ilsa_times+=("$seconds")
   time_of "${common[@]}" "${ilsa[@]}" -DCGAL_ILSA_COMPILED_CORE "$here/benchmark/compile_time/ilsa_call.cpp"
@@ -51,6 +61,11 @@ echo "smooth_surface_mesh_ilsa, header-only:        ${ilsa_times[*]} s (median $
 echo "smooth_surface_mesh_ilsa, core compiled once: ${core_user_times[*]} s (median $core_user_median)"
 echo "tangential_relaxation:                        ${peer_times[*]} s (median $peer_median)"
 echo "src/ilsa_core.cpp, once per project:          ${core_times[*]} s (median $core_median)"
+if [ -n "$baseline" ]; then
+  baseline_median=$(median_of "${baseline_times[@]}")
+  echo "header-only with $baseline: ${baseline_times[*]} s (median $baseline_median)"
+  echo "ratio, header-only with the baseline: $(echo "scale=2; $baseline_median / $peer_median" | bc)"
+fi
 echo "ratio, header-only:        $(echo "scale=2; $ilsa_median / $peer_median" | bc)"
 echo "ratio, core compiled once: $(echo "scale=2; $core_user_median / $peer_median" | bc)"
 rm -rf "$out"
