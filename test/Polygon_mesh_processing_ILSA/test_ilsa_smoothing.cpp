@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Geometry> // cross(), compared with the core's own 3-vector
 #include <Eigen/SVD>
 
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
@@ -29,6 +30,7 @@
 #endif
 
 #include <cctype>
+#include <cstring>
 #include <limits>
 #include <sstream>
 
@@ -403,6 +405,34 @@ void test_penalty_sweeps() {
   assert(largest_normal_component(jacobi) <= 1e-12);
   assert(normal_without > 1e-3);
   assert(unlike_once > nb.smooth.size() / 2);
+}
+
+// The core's 3-vector (internal/ILSA/vec3.h) gives the same bits as Eigen's
+// Vector3d, which it replaced with outputs unchanged: every operation the core
+// uses, on random vectors of very different magnitudes (and zeros).
+void test_vec3_as_eigen() {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  auto coordinate = [&] { return rng() % 16 == 0 ? 0. : unit(rng) * std::pow(10., 8 * unit(rng)); };
+  auto same = [](const ilsa::Vec3& a, const Eigen::Vector3d& b) {
+    return std::memcmp(&a, b.data(), sizeof(double) * 3) == 0;
+  };
+  auto same_bits = [](double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; };
+  for (int c = 0; c < 200000; ++c) {
+    const ilsa::Vec3 a(coordinate(), coordinate(), coordinate()), b(coordinate(), coordinate(), coordinate());
+    const Eigen::Vector3d ea(a[0], a[1], a[2]), eb(b[0], b[1], b[2]);
+    const double s = coordinate();
+    assert(same_bits(a.dot(b), ea.dot(eb)));
+    assert(same_bits(a.squaredNorm(), ea.squaredNorm()) && same_bits(a.norm(), ea.norm()));
+    assert(same(a.normalized(), ea.normalized()) && same(a.cross(b), ea.cross(eb)));
+    assert(same(a + b, ea + eb) && same(a - b, ea - eb) && same(-a, -ea));
+    assert(same(s * a, s * ea) && same(a * s, ea * s) && same(a.cwiseMin(b), ea.cwiseMin(eb)) &&
+           same(a.cwiseMax(b), ea.cwiseMax(eb)));
+    if (s != 0) assert(same(a / s, ea / s));
+    assert(a.isZero(0) == ea.isZero(0) && a.allFinite() == ea.allFinite() && (a == b) == (ea == eb));
+  }
+  std::cout << "vec3: 200000 pairs of vectors, every operation the same bits as Eigen::Vector3d" << std::endl;
 }
 
 // The penalty step's 3x3 solve by cofactors agrees with Eigen's Cholesky
@@ -1396,6 +1426,7 @@ int main() {
   test_vertex_order();
   test_locality_order();
   test_penalty_vertex_normal();
+  test_vec3_as_eigen();
   test_penalty_cofactors();
   test_penalty_sweeps();
   test_degenerate_reference<Surface_mesh>();
