@@ -19,15 +19,23 @@ top=${1:-8}
 cgal=${CGAL_INCLUDE:-/usr/include}
 cxx=${CXX:-clang++}
 interface="$cgal/CGAL/STL_Extension/internal/parameters_interface.h"
-common=(-O2 -std=c++17 -frounding-math -DCGAL_EIGEN3_ENABLED -isystem /usr/include/eigen3 -ftime-trace
-        -ftime-trace-granularity=100)
+common=(-O2 -std=c++17 -frounding-math -DCGAL_EIGEN3_ENABLED -isystem /usr/include/eigen3)
 if [ -n "${CGAL_INCLUDE:-}" ]; then common+=(-isystem "$cgal"); fi
 ilsa=(-I"$here/include" "-DCGAL_ILSA_CGAL_PARAMETERS_INTERFACE=\"$interface\"")
 out=$(mktemp -d)
-"$cxx" "${common[@]}" "${ilsa[@]}" -c "$here/benchmark/compile_time/ilsa_call.cpp" -o "$out/header_only.o"
-"$cxx" "${common[@]}" "${ilsa[@]}" -DCGAL_ILSA_COMPILED_CORE -c "$here/benchmark/compile_time/ilsa_call.cpp" \
-  -o "$out/compiled_core.o"
-"$cxx" "${common[@]}" -c "$here/benchmark/compile_time/tangential_call.cpp" -o "$out/tangential.o"
+programs=(header_only compiled_core tangential)
+# Sets `args` to the flags and the source file of program $1.
+args_of() {
+  case $1 in
+    header_only) args=("${ilsa[@]}" "$here/benchmark/compile_time/ilsa_call.cpp") ;;
+    compiled_core) args=("${ilsa[@]}" -DCGAL_ILSA_COMPILED_CORE "$here/benchmark/compile_time/ilsa_call.cpp") ;;
+    tangential) args=("$here/benchmark/compile_time/tangential_call.cpp") ;;
+  esac
+}
+for name in "${programs[@]}"; do
+  args_of "$name"
+  "$cxx" "${common[@]}" -ftime-trace -ftime-trace-granularity=100 -c "${args[@]}" -o "$out/$name.o"
+done
 python3 - "$out" "$top" <<'PY'
 import json, sys
 out, top = sys.argv[1], int(sys.argv[2])
@@ -56,12 +64,8 @@ for name, what in [("header_only", "smooth_surface_mesh_ilsa, header-only"),
 PY
 # The code handed to the back end: the same compilations stopped before the
 # optimisation passes, as LLVM IR; instructions counted per function.
-for name in header_only compiled_core tangential; do
-  case $name in
-    header_only) args=("${ilsa[@]}" "$here/benchmark/compile_time/ilsa_call.cpp") ;;
-    compiled_core) args=("${ilsa[@]}" -DCGAL_ILSA_COMPILED_CORE "$here/benchmark/compile_time/ilsa_call.cpp") ;;
-    tangential) args=("$here/benchmark/compile_time/tangential_call.cpp") ;;
-  esac
+for name in "${programs[@]}"; do
+  args_of "$name"
   "$cxx" "${common[@]}" -Xclang -disable-llvm-passes -S -emit-llvm "${args[@]}" -o "$out/$name.ll"
 done
 python3 - "$out" <<'PY'
