@@ -103,6 +103,13 @@ struct ILSA_statistics {
   /// projection), by the test that dropped them
   ILSA_move_limits moves_dropped_by;
   ILSA_move_limits moves_shortened_by; ///< the shortened moves, by the test that shortened them last
+  /// an upper bound of the Hausdorff distance (both ways) between the smoothed and the input surface, certified by
+  /// the safety check (user manual, "Fidelity certificate"), relative to the bounding-box diagonal like
+  /// `ilsa_fidelity_tolerance`: at most the tolerance; infinity when no bound is enforced (an infinite tolerance,
+  /// `use_safety_constraints(false)` or `do_project(false)`)
+  double certified_distance = 0;
+  /// the same between the feature lines of the smoothed surface and of the input (the crease bound)
+  double certified_crease_distance = 0;
 };
 
 } // namespace Polygon_mesh_processing

@@ -283,27 +283,18 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *     \cgalParamDefault{`0.03`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_fidelity_tolerance}
- *     \cgalParamDescription{with the safety check on, a move is also shortened or dropped if it takes the smoothed
- * surface farther than this distance from the input surface where it was not already: from the input position of the
- * vertex or of a neighbour to the smoothed faces around it (a bump or a crease bend cut off), or from the centroid and
- * edge midpoints of the faces around the vertex to the input faces around them (a chord over a fold). The same bound
- * holds along the feature lines, both ways: the input's sharp edges (or constrained edges) and the edges whose face
- * normals are more than `ilsa_feature_angle` apart (those the crease contrast and the open-crease rule keep) may not
- * move farther than it from their input position, nor their input points end farther than it from them. Relative to the
- * bounding-box diagonal. `std::numeric_limits<double>::infinity()` disables this part of the check (the paper has no
- * such bound). Between the points it measures the distance can be larger: the sampled Hausdorff distance reaches
- * about twice the tolerance on coarse curved meshes (user manual, "Known Limitations")}
+ *     \cgalParamDescription{with the safety check on, the largest distance between the smoothed and the input
+ * surface, relative to the bounding-box diagonal, certified both ways for every point (no sampling): every point of
+ * the result lies within this distance of the input surface, and every point of the input within it of the result.
+ * The same bound holds between the feature lines of the result and those of the input: the sharp edges (or the
+ * constrained edges) and the edges whose face normals are more than `ilsa_feature_angle` apart that the crease rules
+ * keep. A move after which a face or a feature edge it changes cannot be certified is shortened or dropped (user
+ * manual, "Fidelity Certificate"). The bound is exact up to rounding: the certificate accepts a face only 1e-12 of
+ * the diagonal within the tolerance, and the coordinates are rounded once more when they are written back.
+ * The bound the run reached is `ILSA_statistics::certified_distance`.
+ * `std::numeric_limits<double>::infinity()` disables the bound (the paper has none)}
  *     \cgalParamType{`double`, positive}
- *     \cgalParamDefault{`3e-4`}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{ilsa_fidelity_input_edges}
- *     \cgalParamDescription{with `ilsa_fidelity_tolerance` finite, whether the bound also holds at the points 1/4, 1/2
- * and 3/4 of the way along each input edge: their distance to the smoothed faces around the edge's ends (user manual,
- * "Fidelity at Input Edges"). Between the input vertices the input surface can lie farther from the smoothed one than
- * the vertices do; measuring these points brings the sampled Hausdorff distance closer to the tolerance, at the cost
- * of a slower safety check. Not in the paper}
- *     \cgalParamType{`bool`}
- *     \cgalParamDefault{`false`}
+ *     \cgalParamDefault{`5e-4`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{callback}
  *     \cgalParamDescription{called after each iteration with the advancement, the iterations run over

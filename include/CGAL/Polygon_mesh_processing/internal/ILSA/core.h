@@ -147,7 +147,6 @@ struct Smoothing_parameters {
   bool quality_monotone = defaults::quality_monotone;
   bool reject_worsening = defaults::reject_worsening_moves;
   double fidelity_tolerance = defaults::fidelity_tolerance;
-  bool fidelity_input_edges = defaults::fidelity_input_edges; // the bound also at inner points of the input edges
   double minimum_gain = defaults::minimum_quality_gain;
   double minimum_remaining_gain = defaults::minimum_remaining_gain;
   double retry_distance = defaults::retry_distance;

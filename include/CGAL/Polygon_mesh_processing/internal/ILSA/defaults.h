@@ -51,8 +51,7 @@ inline constexpr bool use_safety_constraints = true;
 inline constexpr double quality_floor = 0.5;
 inline constexpr bool quality_monotone = false;
 inline constexpr bool reject_worsening_moves = true;
-inline constexpr double fidelity_tolerance = 3e-4;  // of the bounding-box diagonal
-inline constexpr bool fidelity_input_edges = false; // true: the bound also at 1/4, 1/2, 3/4 of each input edge
+inline constexpr double fidelity_tolerance = 5e-4; // of the bounding-box diagonal
 inline constexpr double retry_distance = 0.03;      // of the mean edge length
 
 // Quality summary: the aspect ratio under which a face counts as poor.

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <iostream>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -46,8 +47,8 @@ public:
               const Set_up_incidences& incidences)
       : m_(original), nb_(neighborhoods), p_(parameters), penalty_(parameters.penalty),
         projector_(original, classification, incidences, ConcurrencyTag()),
-        safety_(original, classification, incidences, projector_, floor_of_check(original, parameters),
-                parameters.fidelity_tolerance, parameters.reject_worsening, 3, parameters.fidelity_input_edges),
+        safety_(original, classification, incidences, floor_of_check(original, parameters),
+                parameters.fidelity_tolerance, parameters.reject_worsening, 3),
         face_values_(original.number_of_faces()) {
     double mean_edge_length = 0;
     for (const auto& e : m_.edges) mean_edge_length += (m_.points[e[0]] - m_.points[e[1]]).norm();
@@ -95,6 +96,12 @@ public:
         if (gain < p_.minimum_gain || gain * left < p_.minimum_remaining_gain) break;
       }
     }
+    // What the certificates bound (user manual, "Fidelity certificate"); without
+    // the safety check or the projection no bound is enforced.
+    const bool certified = p_.use_safety && p_.do_project;
+    const double none = std::numeric_limits<double>::infinity();
+    stats.certified_distance = certified ? safety_.certified_distance(pos_) : none;
+    stats.certified_crease_distance = certified ? safety_.certified_crease_distance(pos_) : none;
   }
 
   /// T_new, in the normalised coordinates of the flat copy, moved out of the loop.

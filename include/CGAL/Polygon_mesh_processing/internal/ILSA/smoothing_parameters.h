@@ -79,7 +79,6 @@ template <class NamedParameters> Smoothing_parameters read_smoothing_parameters(
   p.quality_monotone = read(internal_np::ilsa_quality_monotone, defaults::quality_monotone);
   p.reject_worsening = read(internal_np::ilsa_reject_worsening_moves, defaults::reject_worsening_moves);
   p.fidelity_tolerance = read(internal_np::ilsa_fidelity_tolerance, defaults::fidelity_tolerance);
-  p.fidelity_input_edges = read(internal_np::ilsa_fidelity_input_edges, defaults::fidelity_input_edges);
   p.minimum_gain = read(internal_np::ilsa_minimum_quality_gain, defaults::minimum_quality_gain);
   p.minimum_remaining_gain = read(internal_np::ilsa_minimum_remaining_gain, defaults::minimum_remaining_gain);
   p.retry_distance = read(internal_np::ilsa_retry_distance, defaults::retry_distance);

@@ -1,0 +1,352 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Certified one-sided distances, without sampling (user manual, "Fidelity
+// certificate"): an upper bound of the largest distance from the points of a
+// triangle (or a segment) to a union of triangles (or segments).
+//
+// The distance to one convex set is a convex function, so over a convex piece
+// of the triangle it is largest at a vertex of the piece. The triangle is cut
+// into convex pieces along the footprints of the candidates seen along its
+// normal: over the piece under a candidate, that candidate is close, and the
+// largest of its distances at the piece's corners bounds the distance of every
+// point of the piece. A piece that no footprint covers (a fold, a face seen
+// edge-on, a gap left by rounding) is bounded by the best candidate at its
+// corners. The cut is only a choice of pieces: every bound stays sound
+// whatever the footprints are, since any candidate bounds the distance to the
+// union. Rounding: the pieces' corners are rounded to within a few units in
+// the last place of the coordinates, so callers compare the bound with the
+// tolerance less `certificate_margin`.
+
+#ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_DISTANCE_CERTIFICATE_H
+#define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_DISTANCE_CERTIFICATE_H
+
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <utility>
+
+namespace CGAL {
+namespace Polygon_mesh_processing {
+namespace internal {
+namespace ILSA {
+
+/// What a certified bound must stay below the tolerance by, in the normalised
+/// units of the flat copy (the bounding-box diagonal is 1): it covers the
+/// rounding of the pieces' corners and of the distances, which is of the
+/// order of 1e-16 there.
+constexpr double certificate_margin = 1e-12;
+
+namespace certificate {
+/// Pieces this close to the line they were cut along are left out (their
+/// points are within this distance of the pieces kept); far below the margin.
+constexpr double on_line_distance = 1e-14;
+} // namespace certificate
+
+namespace certificate {
+
+struct Point2 {
+  double x, y;
+};
+
+/// A convex polygon with at most `capacity` corners (clipping one by a
+/// half-plane adds at most one corner; a piece that would need more is not
+/// cut further, which only loosens the bound).
+struct Polygon2 {
+  static constexpr int capacity = 16;
+  std::array<Point2, capacity> p;
+  int n = 0;
+};
+
+inline double cross(const Point2& o, const Point2& a, const Point2& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+/// The part of `in` on the side of the line through `a` and `b` where
+/// `sign * cross(a, b, x) >= 0`. Returns false when it has more corners than
+/// Polygon2 holds (`out` is then unusable).
+inline bool clip(const Polygon2& in, const Point2& a, const Point2& b, double sign, Polygon2& out) {
+  out.n = 0;
+  for (int i = 0; i < in.n; ++i) {
+    const Point2& p = in.p[i];
+    const Point2& q = in.p[(i + 1) % in.n];
+    const double sp = sign * cross(a, b, p), sq = sign * cross(a, b, q);
+    if (sp >= 0) {
+      if (out.n == Polygon2::capacity) return false;
+      out.p[out.n++] = p;
+    }
+    if ((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) {
+      if (out.n == Polygon2::capacity) return false;
+      const double t = sp / (sp - sq);
+      out.p[out.n++] = {p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
+    }
+  }
+  return true;
+}
+
+/// An orthonormal frame of the plane of a triangle, its first corner at the origin.
+struct Frame {
+  Vec3 origin, u, w;
+  Point2 to2(const Vec3& x) const {
+    const Vec3 r = x - origin;
+    return {r.dot(u), r.dot(w)};
+  }
+  Vec3 to3(const Point2& p) const { return origin + p.x * u + p.y * w; }
+};
+
+/// Pieces not yet bounded; at most `capacity`.
+struct Pieces {
+  static constexpr int capacity = 32;
+  std::array<Polygon2, capacity> piece;
+  int n = 0;
+  bool push(const Polygon2& p) {
+    if (p.n < 3) return true; // no interior: its points lie on the other pieces' sides
+    if (n == capacity) return false;
+    piece[n++] = p;
+    return true;
+  }
+};
+
+// Largest squared distance from the corners of `piece` (lifted by `frame`) to
+// `candidate`, or more than `limit2` once one corner is farther; `far` is then
+// that corner.
+template <class Triangle>
+double corner_bound(const Polygon2& piece, const Frame& frame, const Triangle& t, double limit2, Vec3* far = nullptr) {
+  double worst = 0;
+  for (int i = 0; i < piece.n; ++i) {
+    const Vec3 x = frame.to3(piece.p[i]);
+    worst = (std::max)(worst, squared_distance_to_triangle(x, t[0], t[1], t[2]));
+    if (worst > limit2) {
+      if (far) *far = x;
+      break;
+    }
+  }
+  return worst;
+}
+
+// Whether every corner of `piece` is within `limit` of a candidate (if not,
+// no choice of pieces can bound the triangle).
+template <class Candidate>
+bool corners_near(const Polygon2& piece, const Frame& frame, std::size_t n, const Candidate& candidate, double limit2) {
+  for (int i = 0; i < piece.n; ++i) {
+    const Vec3 x = frame.to3(piece.p[std::size_t(i)]);
+    bool near = false;
+    for (std::size_t k = 0; k < n && !near; ++k) {
+      const std::array<Vec3, 3> t = candidate(k);
+      near = squared_distance_to_triangle(x, t[0], t[1], t[2]) <= limit2;
+    }
+    if (!near) return false;
+  }
+  return true;
+}
+
+// Whether the triangle `abc` is too thin for a frame of its plane: then it is
+// bounded through its longest edge (triangle_bound()).
+inline bool is_thin(double double_area, double longest_squared) {
+  return !(double_area > 1e-9 * longest_squared);
+}
+
+} // namespace certificate
+
+/// Segment version of triangle_bound(): an upper bound of the largest distance
+/// from the points of the segment `pq` to the union of the segments
+/// `candidate(0) .. candidate(n - 1)` (each a `std::array<Vec3, 2>`), or
+/// infinity when no bound of at most `limit` is found. The segment is cut at
+/// the ends of the candidates' footprints on its line.
+template <class Candidate> double segment_bound(const Vec3& p, const Vec3& q, std::size_t n, const Candidate& candidate,
+                                                double limit) {
+  const double limit2 = limit * limit, inf = std::numeric_limits<double>::infinity();
+  const Vec3 pq = q - p;
+  const double l2 = pq.squaredNorm();
+  auto at = [&](double s) -> Vec3 { return p + s * pq; };
+  auto piece_bound = [&](double s0, double s1, const std::array<Vec3, 2>& c) {
+    const double d0 = squared_distance_to_segment(at(s0), c[0], c[1]);
+    return d0 > limit2 ? d0 : (std::max)(d0, squared_distance_to_segment(at(s1), c[0], c[1]));
+  };
+  std::array<std::pair<double, double>, 16> open;
+  int n_open = 0;
+  open[n_open++] = {0., 1.};
+  double worst = 0;
+  for (std::size_t k = 0; k < n && n_open > 0 && l2 > 0; ++k) {
+    const std::array<Vec3, 2> c = candidate(k);
+    double lo = (c[0] - p).dot(pq) / l2, hi = (c[1] - p).dot(pq) / l2;
+    if (lo > hi) std::swap(lo, hi);
+    if (!(hi > lo)) continue;
+    for (int i = 0; i < n_open; ++i) {
+      const double s0 = (std::max)(open[i].first, lo), s1 = (std::min)(open[i].second, hi);
+      if (!(s1 > s0)) continue;
+      const double b = piece_bound(s0, s1, c);
+      if (b > limit2) continue;
+      worst = (std::max)(worst, b);
+      const std::pair<double, double> left{open[i].first, s0}, right{s1, open[i].second};
+      open[i] = open[--n_open]; // the piece is bounded; what lies outside the footprint stays open
+      if (right.second > right.first) {
+        if (n_open == int(open.size())) return inf;
+        open[n_open++] = right;
+      }
+      if (left.second > left.first) {
+        if (n_open == int(open.size())) return inf;
+        open[n_open++] = left;
+      }
+      --i; // look at the piece moved into slot i
+    }
+  }
+  for (int i = 0; i < n_open; ++i) { // by the best candidate at the ends
+    double best = inf;
+    for (std::size_t k = 0; k < n && best > limit2; ++k)
+      best = (std::min)(best, piece_bound(open[i].first, open[i].second, candidate(k)));
+    if (best > limit2) return inf;
+    worst = (std::max)(worst, best);
+  }
+  return std::sqrt(worst);
+}
+
+/// An upper bound of the largest distance from the points of the triangle
+/// `abc` to the union of the triangles `candidate(0) .. candidate(n - 1)`
+/// (each a `std::array<Vec3, 3>`), or infinity when no bound of at most
+/// `limit` is found. Candidates that cover much of the triangle are best
+/// given first: each one bounds the piece under its footprint, and a first
+/// candidate that bounds the whole triangle at its corners ends the work.
+template <class Candidate> double triangle_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n,
+                                                 const Candidate& candidate, double limit) {
+  using namespace certificate;
+  const double limit2 = limit * limit, inf = std::numeric_limits<double>::infinity();
+  if (n == 0) return inf;
+  // A thin triangle: each of its points lies within the distance h of its
+  // third corner to its longest edge (convexity again), so the edge's bound
+  // plus h bounds the triangle.
+  const Vec3 normal = (b - a).cross(c - a);
+  const std::array<double, 3> l2{(c - b).squaredNorm(), (a - c).squaredNorm(), (b - a).squaredNorm()};
+  const int longest = int(std::max_element(l2.begin(), l2.end()) - l2.begin());
+  if (is_thin(normal.norm(), l2[std::size_t(longest)])) {
+    const std::array<Vec3, 3> abc{a, b, c};
+    const Vec3 &p = abc[std::size_t(longest + 1) % 3], &q = abc[std::size_t(longest + 2) % 3];
+    const double h = std::sqrt(squared_distance_to_segment(abc[std::size_t(longest)], p, q));
+    if (!(h < limit)) return inf;
+    const double edge = segment_bound(
+        p, q, 3 * n,
+        [&](std::size_t k) {
+          const std::array<Vec3, 3> t = candidate(k / 3);
+          return std::array<Vec3, 2>{t[k % 3], t[(k + 1) % 3]};
+        },
+        limit - h);
+    // The segment bound against the candidates' edges bounds the distance to
+    // the candidates themselves from above.
+    return edge + h;
+  }
+  Frame frame;
+  frame.origin = a;
+  frame.u = (b - a) / std::sqrt(l2[2]);
+  const Vec3 unit_normal = normal / normal.norm();
+  frame.w = unit_normal.cross(frame.u);
+  // The first candidate, at the corners of the whole triangle.
+  Polygon2 whole;
+  whole.n = 3;
+  whole.p[0] = {0., 0.}, whole.p[1] = frame.to2(b), whole.p[2] = frame.to2(c);
+  const std::array<Vec3, 3> first = candidate(0);
+  double worst = corner_bound(whole, frame, first, limit2);
+  if (worst <= limit2) return std::sqrt(worst);
+  worst = 0;
+  Pieces open;
+  open.push(whole);
+  std::size_t last = 0; // the last candidate that bounded a piece
+  Polygon2 inside, next, outside;
+  for (std::size_t k = 0; k < n && open.n > 0; ++k) {
+    const std::array<Vec3, 3> t = k == 0 ? first : candidate(k);
+    std::array<Point2, 3> f{frame.to2(t[0]), frame.to2(t[1]), frame.to2(t[2])};
+    const double area = cross(f[0], f[1], f[2]);
+    if (!(std::abs(area) > 0)) continue; // seen edge-on: no footprint
+    if (area < 0) std::swap(f[1], f[2]);
+    const double lo_x = (std::min)({f[0].x, f[1].x, f[2].x}), hi_x = (std::max)({f[0].x, f[1].x, f[2].x});
+    const double lo_y = (std::min)({f[0].y, f[1].y, f[2].y}), hi_y = (std::max)({f[0].y, f[1].y, f[2].y});
+    const int pieces_before = open.n;
+    for (int i = 0; i < pieces_before; ++i) {
+      const Polygon2& piece = open.piece[std::size_t(i)];
+      double p_lo_x = inf, p_hi_x = -inf, p_lo_y = inf, p_hi_y = -inf; // the piece's bounding box
+      for (int j = 0; j < piece.n; ++j) {
+        p_lo_x = (std::min)(p_lo_x, piece.p[j].x), p_hi_x = (std::max)(p_hi_x, piece.p[j].x);
+        p_lo_y = (std::min)(p_lo_y, piece.p[j].y), p_hi_y = (std::max)(p_hi_y, piece.p[j].y);
+      }
+      if (p_hi_x < lo_x || p_lo_x > hi_x || p_hi_y < lo_y || p_lo_y > hi_y) continue;
+      // The piece under the footprint, and the (up to three) pieces around it.
+      inside = piece;
+      bool fits = true;
+      std::array<Polygon2, 3> around;
+      for (int e = 0; e < 3 && fits && inside.n >= 3; ++e) {
+        const Point2 &p = f[std::size_t(e)], &q = f[std::size_t(e + 1) % 3];
+        Polygon2& out = around[std::size_t(e)];
+        fits = clip(inside, p, q, -1., out) && clip(inside, p, q, 1., next);
+        inside = next;
+        // A piece within `on_line` of the line is left out: its points lie
+        // that close to the rest of the piece (user manual, "Fidelity certificate").
+        const double on_line = on_line_distance * std::sqrt((q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y));
+        bool thin = true;
+        for (int j = 0; j < out.n && thin; ++j) thin = std::abs(cross(p, q, out.p[std::size_t(j)])) <= on_line;
+        if (thin) out.n = 0;
+      }
+      if (!fits || inside.n < 3) continue;
+      Vec3 far;
+      const double bound = corner_bound(inside, frame, t, limit2, &far);
+      if (bound > limit2) {
+        // A point of the triangle farther than `limit` from every candidate:
+        // no choice of pieces can bound it.
+        Polygon2 point;
+        point.n = 1, point.p[0] = frame.to2(far);
+        if (!corners_near(point, frame, n, candidate, limit2)) return inf;
+        continue;
+      }
+      worst = (std::max)(worst, bound);
+      last = k;
+      // The piece is replaced by the pieces around the footprint.
+      open.piece[std::size_t(i)].n = 0;
+      for (const Polygon2& rest : around)
+        if (!open.push(rest)) return inf;
+    }
+    int kept = 0; // drop the bounded pieces
+    for (int i = 0; i < open.n; ++i)
+      if (open.piece[std::size_t(i)].n > 0) open.piece[std::size_t(kept++)] = open.piece[std::size_t(i)];
+    open.n = kept;
+  }
+  // The pieces left: each by the best candidate at its corners, or else cut
+  // in two across its longest side, up to `halvings` pieces in all.
+  int halvings = 64;
+  while (open.n > 0) {
+    const Polygon2 piece = open.piece[std::size_t(--open.n)];
+    double best = inf;
+    for (std::size_t j = 0; j < n && best > limit2; ++j)
+      best = (std::min)(best, corner_bound(piece, frame, candidate((last + j) % n), limit2));
+    if (best <= limit2) {
+      worst = (std::max)(worst, best);
+      continue;
+    }
+    if (--halvings < 0 || !corners_near(piece, frame, n, candidate, limit2)) return inf;
+    // The cut: from the middle of the longest side to the middle of the
+    // side opposite (or the corner opposite).
+    int longest = 0;
+    double length = -1;
+    for (int j = 0; j < piece.n; ++j) {
+      const Point2 &a = piece.p[std::size_t(j)], &b = piece.p[std::size_t(j + 1) % std::size_t(piece.n)];
+      const double l = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
+      if (l > length) length = l, longest = j;
+    }
+    const Point2 &a = piece.p[std::size_t(longest)], &b = piece.p[std::size_t(longest + 1) % std::size_t(piece.n)];
+    const Point2 middle{(a.x + b.x) / 2, (a.y + b.y) / 2};
+    const Point2& opposite = piece.p[std::size_t(longest + 1 + piece.n / 2) % std::size_t(piece.n)];
+    Polygon2 half;
+    for (double side : {1., -1.}) {
+      if (!clip(piece, middle, opposite, side, half) || !open.push(half)) return inf;
+    }
+  }
+  return std::sqrt(worst);
+}
+
+} // namespace ILSA
+} // namespace internal
+} // namespace Polygon_mesh_processing
+} // namespace CGAL
+
+#endif // CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_DISTANCE_CERTIFICATE_H

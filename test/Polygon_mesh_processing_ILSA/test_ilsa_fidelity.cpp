@@ -1,0 +1,172 @@
+// Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The fidelity certificate (user manual, "Fidelity Certificate"):
+// - the certified distances of a triangle and of a segment to a union of
+//   triangles or segments are upper bounds of the distances of densely
+//   sampled points, on random configurations;
+// - the smoothed meshes stay within the fidelity tolerance of their input,
+//   both ways, as judged by CGAL's own bounded-error symmetric Hausdorff
+//   distance (is_Hausdorff_distance_larger(), error 1e-5 of the diagonal,
+//   counted against the package), on the bundled meshes, the shared ones when
+//   present, at the default tolerance and at 1e-4 and 1e-3, on Surface_mesh and
+//   Polyhedron_3, sequential and parallel; and the bound ILSA_statistics
+//   reports is at most the tolerance;
+// - without the bound the same judge finds the result beyond it, so the test
+//   can fail.
+// ILSA_FIDELITY_MAX_FACES (environment) leaves out the larger meshes.
+
+#include "ilsa_test_utils.h"
+
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/distance_certificate.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
+#include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace ilsa_test;
+namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+
+// Random triangles against a few random triangles nearby (and segments
+// against segments): the certified bound is never below the distance of a
+// sampled point, and it is found for configurations well within the limit.
+void test_bounds_against_samples() {
+  std::mt19937 rng(20261206u);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  auto point = [&](double s) { return ilsa::Vec3(s * unit(rng), s * unit(rng), 0.1 * s * unit(rng)); };
+  std::size_t certified = 0, segments_certified = 0;
+  for (int c = 0; c < 2000; ++c) {
+    const ilsa::Vec3 a = point(1), b = point(1), d = point(1);
+    std::vector<std::array<ilsa::Vec3, 3>> candidates(1 + c % 6);
+    for (auto& t : candidates) t = {point(1.5), point(1.5), point(1.5)};
+    const double limit = 0.05 + 2 * std::abs(unit(rng));
+    auto candidate = [&](std::size_t k) { return candidates[k]; };
+    const double bound = ilsa::triangle_bound(a, b, d, candidates.size(), candidate, limit);
+    double sampled = 0;
+    const int n = 40;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const ilsa::Vec3 x = a + (double(i) / n) * (b - a) + (double(j) / n) * (d - a);
+        double best = std::numeric_limits<double>::infinity();
+        for (const auto& t : candidates)
+          best = (std::min)(best, ilsa::squared_distance_to_triangle(x, t[0], t[1], t[2]));
+        sampled = (std::max)(sampled, std::sqrt(best));
+      }
+    if (bound <= limit) {
+      ++certified;
+      ILSA_CHECK(bound >= sampled - 1e-12);
+    } else {
+      ILSA_CHECK(bound == std::numeric_limits<double>::infinity());
+    }
+    // The segment version, on the first edges.
+    std::vector<std::array<ilsa::Vec3, 2>> edges;
+    for (const auto& t : candidates) edges.push_back({t[0], t[1]});
+    const double segment = ilsa::segment_bound(
+        a, b, edges.size(), [&](std::size_t k) { return edges[k]; }, limit);
+    double segment_sampled = 0;
+    for (int i = 0; i <= 200; ++i) {
+      const ilsa::Vec3 x = a + (i / 200.) * (b - a);
+      double best = std::numeric_limits<double>::infinity();
+      for (const auto& e : edges) best = (std::min)(best, ilsa::squared_distance_to_segment(x, e[0], e[1]));
+      segment_sampled = (std::max)(segment_sampled, std::sqrt(best));
+    }
+    if (segment <= limit) {
+      ++segments_certified;
+      ILSA_CHECK(segment >= segment_sampled - 1e-12);
+    }
+  }
+  // A triangle on a flat mesh of eight triangles around it, lifted a little:
+  // certified close to the lift.
+  const std::vector<std::array<ilsa::Vec3, 3>> flat{
+      {ilsa::Vec3(-2, -2, 0), ilsa::Vec3(2, -2, 0), ilsa::Vec3(2, 2, 0)},
+      {ilsa::Vec3(-2, -2, 0), ilsa::Vec3(2, 2, 0), ilsa::Vec3(-2, 2, 0)}};
+  const double lifted = ilsa::triangle_bound(
+      ilsa::Vec3(-1, -1, 1e-3), ilsa::Vec3(1, -0.5, 2e-3), ilsa::Vec3(0, 1, 1e-3), flat.size(),
+      [&](std::size_t k) { return flat[k]; }, 1e-2);
+  ILSA_CHECK(lifted >= 2e-3 && lifted <= 2e-3 + 1e-12);
+  std::cout << "certified bounds against samples: " << certified << " triangles and " << segments_certified
+            << " segments certified of 2000, none below a sample; lifted triangle " << lifted << std::endl;
+  ILSA_CHECK(certified > 200 && segments_certified > 200);
+}
+
+std::size_t max_faces() {
+  const char* text = std::getenv("ILSA_FIDELITY_MAX_FACES");
+  return text ? std::size_t(std::strtoull(text, nullptr, 10)) : std::numeric_limits<std::size_t>::max();
+}
+
+// Smooths `input` with the tolerance `tolerance` and judges the result with
+// CGAL's bounded-error distance; returns the result.
+template <class Mesh, class ConcurrencyTag = CGAL::Sequential_tag>
+Mesh smooth_and_judge(const Mesh& input, double tolerance, const std::string& name) {
+  Mesh result = input;
+  const auto stats = PMP::smooth_surface_mesh_ilsa<ConcurrencyTag>(
+      result, CGAL::parameters::ilsa_fidelity_tolerance(tolerance));
+  const double diagonal = bbox_diagonal(input), error = 1e-5 * diagonal;
+  const bool larger = PMP::is_Hausdorff_distance_larger<CGAL::Sequential_tag>(
+      input, result, tolerance * diagonal, error, CGAL::parameters::use_one_sided_hausdorff(false),
+      CGAL::parameters::default_values());
+  std::cout << name << " (" << num_faces(input) << " faces), tolerance " << tolerance << ": certified "
+            << stats.certified_distance << ", crease " << stats.certified_crease_distance
+            << ", CGAL: larger than the tolerance: " << (larger ? "yes" : "no") << ", mean q "
+            << PMP::mesh_quality_ilsa(input).mean_aspect_ratio << " -> " << PMP::mesh_quality_ilsa(result).mean_aspect_ratio
+            << std::endl;
+  ILSA_CHECK(!larger);
+  ILSA_CHECK(stats.certified_distance <= tolerance);
+  ILSA_CHECK(stats.certified_crease_distance <= tolerance);
+  ILSA_CHECK(PMP::mesh_quality_ilsa(result).mean_aspect_ratio > PMP::mesh_quality_ilsa(input).mean_aspect_ratio);
+  return result;
+}
+
+void test_meshes() {
+  const double tolerance = ilsa::defaults::fidelity_tolerance;
+  std::vector<std::string> files;
+  for (const char* name : {"sphere_low.off", "elephant.off", "hemisphere.off", "fandisk.off", "mech-holes-shark.off",
+                           "horse.ply"})
+    files.push_back(data_file(name));
+  const std::string shared = ILSA_SHARED_DATA_DIR;
+  for (const char* name : {"beetle.off", "camelhead.off", "cow.off"})
+    if (std::filesystem::exists(shared + "/" + name)) files.push_back(shared + "/" + name);
+  for (const std::string& file : files) {
+    const Surface_mesh input = read_mesh<Surface_mesh>(file);
+    if (num_faces(input) > max_faces()) {
+      std::cout << file << ": left out (ILSA_FIDELITY_MAX_FACES)" << std::endl;
+      continue;
+    }
+    smooth_and_judge(input, tolerance, std::filesystem::path(file).filename().string());
+  }
+  // Other tolerances, Polyhedron_3, and Parallel_tag with the same bits.
+  const Surface_mesh elephant = read_mesh<Surface_mesh>(data_file("elephant.off"));
+  for (double t : {1e-4, 1e-3}) smooth_and_judge(elephant, t, "elephant");
+  const Polyhedron polyhedron = read_mesh<Polyhedron>(data_file("fandisk.off"));
+  smooth_and_judge(polyhedron, tolerance, "fandisk (Polyhedron_3)");
+#ifdef CGAL_LINKED_WITH_TBB
+  const Surface_mesh sequential = smooth_and_judge(elephant, 1e-4, "elephant");
+  const Surface_mesh parallel = smooth_and_judge<Surface_mesh, CGAL::Parallel_tag>(elephant, 1e-4, "elephant (parallel)");
+  ILSA_CHECK(points_of(sequential) == points_of(parallel));
+#endif
+  // Without the bound, the judge finds the elephant beyond the tolerance.
+  Surface_mesh unbounded = elephant;
+  const auto stats = PMP::smooth_surface_mesh_ilsa(
+      unbounded, CGAL::parameters::ilsa_fidelity_tolerance(std::numeric_limits<double>::infinity()));
+  const double diagonal = bbox_diagonal(elephant);
+  const bool larger = PMP::is_Hausdorff_distance_larger<CGAL::Sequential_tag>(
+      elephant, unbounded, tolerance * diagonal, 1e-5 * diagonal, CGAL::parameters::use_one_sided_hausdorff(false),
+      CGAL::parameters::default_values());
+  std::cout << "elephant without the bound: CGAL: larger than " << tolerance << ": " << (larger ? "yes" : "no")
+            << ", certified " << stats.certified_distance << std::endl;
+  ILSA_CHECK(larger && stats.certified_distance == std::numeric_limits<double>::infinity());
+}
+
+int main() {
+  test_bounds_against_samples();
+  test_meshes();
+  std::cout << "test_ilsa_fidelity: OK" << std::endl;
+  return 0;
+}
