@@ -20,7 +20,8 @@ namespace {
 
 using P2 = K::Point_2;
 const double pi = 3.14159265358979323846;
-const double tolerance = 3e-4; // the default fidelity tolerance, of the bounding-box diagonal
+// The default fidelity tolerance, of the bounding-box diagonal, and the rounding of the write-back.
+const double tolerance = PMP::internal::ILSA::defaults::fidelity_tolerance + 1e-12;
 
 struct Crease_mesh {
   Soup soup;

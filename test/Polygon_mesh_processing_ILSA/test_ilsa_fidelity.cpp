@@ -131,7 +131,7 @@ void test_meshes() {
                            "horse.ply"})
     files.push_back(data_file(name));
   const std::string shared = ILSA_SHARED_DATA_DIR;
-  for (const char* name : {"beetle.off", "camelhead.off", "cow.off"})
+  for (const char* name : {"beetle.off", "camelhead.off", "cow.off", "abc4.stl"})
     if (std::filesystem::exists(shared + "/" + name)) files.push_back(shared + "/" + name);
   for (const std::string& file : files) {
     const Surface_mesh input = read_mesh<Surface_mesh>(file);

@@ -51,8 +51,9 @@ public:
   bool enabled() const { return std::isfinite(tolerance_) && !features_.empty(); }
 
   /// Checks the feature edges whose bounds the moves of `changed` (positions
-  /// `pos`) may have changed, and calls `blame(w)` for each vertex a failed
-  /// edge depends on (in edge order).
+  /// `pos`) may have changed, and calls `blame(w)` for vertices a failed
+  /// edge depends on, in edge order; `blame(w)` returns whether the move of
+  /// `w` is shortened.
   template <class ConcurrencyTag, class Blame>
   void check(const std::vector<Vec3>& pos, const std::vector<Index>& changed, const Blame& blame) {
     if (!enabled() || changed.empty()) return;
@@ -73,13 +74,17 @@ public:
     parallel_for<ConcurrencyTag>(checked_.size(), [&](std::size_t i) {
       failed_[i] = !(output_distance(pos, checked_[i], limit_) <= limit_) || !(input_distance(pos, checked_[i], limit_) <= limit_);
     });
-    for (std::size_t i = 0; i < checked_.size(); ++i)
-      if (failed_[i]) {
-        const auto& ends = m_.edges[checked_[i]];
-        for (std::size_t w : ends) for_each_line_edge(w, line_of(checked_[i]), [&](std::size_t e) {
-            blame(m_.edges[e][0]), blame(m_.edges[e][1]);
-          });
-      }
+    // A failed edge shortens the moves of its ends first; only when neither
+    // can be shortened, those of the other vertices it depends on.
+    for (std::size_t i = 0; i < checked_.size(); ++i) {
+      if (!failed_[i]) continue;
+      const auto& ends = m_.edges[checked_[i]];
+      bool blamed = false;
+      for (std::size_t w : ends) blamed = blame(w) || blamed;
+      if (blamed) continue;
+      for (std::size_t w : ends)
+        for_each_line_edge(w, line_of(checked_[i]), [&](std::size_t e) { blame(m_.edges[e][0]), blame(m_.edges[e][1]); });
+    }
   }
 
   /// The largest distance between the smoothed feature lines at `pos` and the

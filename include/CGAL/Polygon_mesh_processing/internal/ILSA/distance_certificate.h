@@ -60,6 +60,21 @@ struct Polygon2 {
   static constexpr int capacity = 16;
   std::array<Point2, capacity> p;
   int n = 0;
+  double lo_x = 0, hi_x = 0, lo_y = 0, hi_y = 0; // bounding box, set by Pieces::push()
+
+  // Copies the corners only (the whole array would be most of the work).
+  void assign(const Polygon2& other) {
+    n = other.n;
+    std::copy(other.p.begin(), other.p.begin() + n, p.begin());
+    lo_x = other.lo_x, hi_x = other.hi_x, lo_y = other.lo_y, hi_y = other.hi_y;
+  }
+  void set_box() {
+    lo_x = hi_x = p[0].x, lo_y = hi_y = p[0].y;
+    for (int i = 1; i < n; ++i) {
+      lo_x = (std::min)(lo_x, p[std::size_t(i)].x), hi_x = (std::max)(hi_x, p[std::size_t(i)].x);
+      lo_y = (std::min)(lo_y, p[std::size_t(i)].y), hi_y = (std::max)(hi_y, p[std::size_t(i)].y);
+    }
+  }
 };
 
 inline double cross(const Point2& o, const Point2& a, const Point2& b) {
@@ -106,8 +121,13 @@ struct Pieces {
   bool push(const Polygon2& p) {
     if (p.n < 3) return true; // no interior: its points lie on the other pieces' sides
     if (n == capacity) return false;
-    piece[n++] = p;
+    piece[std::size_t(n)].assign(p);
+    piece[std::size_t(n++)].set_box();
     return true;
+  }
+  // Removes piece `i`, replaced by the last one.
+  void remove(int i) {
+    if (i != --n) piece[std::size_t(i)].assign(piece[std::size_t(n)]);
   }
 };
 
@@ -252,9 +272,11 @@ template <class Candidate> double triangle_bound(const Vec3& a, const Vec3& b, c
   if (worst <= limit2) return std::sqrt(worst);
   worst = 0;
   Pieces open;
+  whole.set_box();
   open.push(whole);
   std::size_t last = 0; // the last candidate that bounded a piece
-  Polygon2 inside, next, outside;
+  std::array<Polygon2, 2> buffer;
+  std::array<Polygon2, 3> around;
   for (std::size_t k = 0; k < n && open.n > 0; ++k) {
     const std::array<Vec3, 3> t = k == 0 ? first : candidate(k);
     std::array<Point2, 3> f{frame.to2(t[0]), frame.to2(t[1]), frame.to2(t[2])};
@@ -263,59 +285,64 @@ template <class Candidate> double triangle_bound(const Vec3& a, const Vec3& b, c
     if (area < 0) std::swap(f[1], f[2]);
     const double lo_x = (std::min)({f[0].x, f[1].x, f[2].x}), hi_x = (std::max)({f[0].x, f[1].x, f[2].x});
     const double lo_y = (std::min)({f[0].y, f[1].y, f[2].y}), hi_y = (std::max)({f[0].y, f[1].y, f[2].y});
-    const int pieces_before = open.n;
-    for (int i = 0; i < pieces_before; ++i) {
+    // The pieces open before this candidate (those it adds lie outside its footprint).
+    int i = 0, before = open.n;
+    while (i < before) {
       const Polygon2& piece = open.piece[std::size_t(i)];
-      double p_lo_x = inf, p_hi_x = -inf, p_lo_y = inf, p_hi_y = -inf; // the piece's bounding box
-      for (int j = 0; j < piece.n; ++j) {
-        p_lo_x = (std::min)(p_lo_x, piece.p[j].x), p_hi_x = (std::max)(p_hi_x, piece.p[j].x);
-        p_lo_y = (std::min)(p_lo_y, piece.p[j].y), p_hi_y = (std::max)(p_hi_y, piece.p[j].y);
+      if (piece.hi_x < lo_x || piece.lo_x > hi_x || piece.hi_y < lo_y || piece.lo_y > hi_y) {
+        ++i;
+        continue;
       }
-      if (p_hi_x < lo_x || p_lo_x > hi_x || p_hi_y < lo_y || p_lo_y > hi_y) continue;
       // The piece under the footprint, and the (up to three) pieces around it.
-      inside = piece;
+      const Polygon2* inside = &piece;
       bool fits = true;
-      std::array<Polygon2, 3> around;
-      for (int e = 0; e < 3 && fits && inside.n >= 3; ++e) {
+      for (Polygon2& out : around) out.n = 0;
+      for (int e = 0; e < 3 && fits && inside->n >= 3; ++e) {
         const Point2 &p = f[std::size_t(e)], &q = f[std::size_t(e + 1) % 3];
         Polygon2& out = around[std::size_t(e)];
-        fits = clip(inside, p, q, -1., out) && clip(inside, p, q, 1., next);
-        inside = next;
+        Polygon2& in = buffer[std::size_t(e % 2)];
+        fits = clip(*inside, p, q, -1., out) && clip(*inside, p, q, 1., in);
+        inside = &in;
         // A piece within `on_line` of the line is left out: its points lie
-        // that close to the rest of the piece (user manual, "Fidelity certificate").
+        // that close to the rest of the piece (user manual, "Fidelity Certificate").
         const double on_line = on_line_distance * std::sqrt((q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y));
         bool thin = true;
         for (int j = 0; j < out.n && thin; ++j) thin = std::abs(cross(p, q, out.p[std::size_t(j)])) <= on_line;
         if (thin) out.n = 0;
       }
-      if (!fits || inside.n < 3) continue;
+      if (!fits || inside->n < 3) {
+        ++i;
+        continue;
+      }
       Vec3 far;
-      const double bound = corner_bound(inside, frame, t, limit2, &far);
+      const double bound = corner_bound(*inside, frame, t, limit2, &far);
       if (bound > limit2) {
         // A point of the triangle farther than `limit` from every candidate:
         // no choice of pieces can bound it.
         Polygon2 point;
         point.n = 1, point.p[0] = frame.to2(far);
         if (!corners_near(point, frame, n, candidate, limit2)) return inf;
+        ++i;
         continue;
       }
       worst = (std::max)(worst, bound);
       last = k;
-      // The piece is replaced by the pieces around the footprint.
-      open.piece[std::size_t(i)].n = 0;
+      // The piece is replaced by the pieces around the footprint: the last
+      // piece open before this candidate takes its place, and the last piece
+      // of all takes that one's.
+      const int last_before = --before;
+      if (i != last_before) open.piece[std::size_t(i)].assign(open.piece[std::size_t(last_before)]);
+      open.remove(last_before);
       for (const Polygon2& rest : around)
         if (!open.push(rest)) return inf;
     }
-    int kept = 0; // drop the bounded pieces
-    for (int i = 0; i < open.n; ++i)
-      if (open.piece[std::size_t(i)].n > 0) open.piece[std::size_t(kept++)] = open.piece[std::size_t(i)];
-    open.n = kept;
   }
   // The pieces left: each by the best candidate at its corners, or else cut
   // in two across its longest side, up to `halvings` pieces in all.
   int halvings = 64;
+  Polygon2 piece;
   while (open.n > 0) {
-    const Polygon2 piece = open.piece[std::size_t(--open.n)];
+    piece.assign(open.piece[std::size_t(--open.n)]);
     double best = inf;
     for (std::size_t j = 0; j < n && best > limit2; ++j)
       best = (std::min)(best, corner_bound(piece, frame, candidate((last + j) % n), limit2));
@@ -336,10 +363,8 @@ template <class Candidate> double triangle_bound(const Vec3& a, const Vec3& b, c
     const Point2 &a = piece.p[std::size_t(longest)], &b = piece.p[std::size_t(longest + 1) % std::size_t(piece.n)];
     const Point2 middle{(a.x + b.x) / 2, (a.y + b.y) / 2};
     const Point2& opposite = piece.p[std::size_t(longest + 1 + piece.n / 2) % std::size_t(piece.n)];
-    Polygon2 half;
-    for (double side : {1., -1.}) {
-      if (!clip(piece, middle, opposite, side, half) || !open.push(half)) return inf;
-    }
+    for (double side : {1., -1.})
+      if (!clip(piece, middle, opposite, side, buffer[0]) || !open.push(buffer[0])) return inf;
   }
   return std::sqrt(worst);
 }

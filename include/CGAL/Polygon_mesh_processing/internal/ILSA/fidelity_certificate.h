@@ -14,10 +14,10 @@
 // check accepts no position at which a face it changes is not certified, so
 // every accepted state is certified.
 //
-// A bound stays a bound while the vertices move, grown by the length of their
-// paths (a point of a face moves by at most as much as its farthest-moving
-// vertex): a face whose last bound plus that growth is within the tolerance is
-// not measured again.
+// A bound stays a bound while the vertices move, grown by the largest
+// distance its vertices moved (a point of a face moves by at most as much as
+// its farthest-moving vertex): a face whose bound at the accepted positions
+// plus that distance is within the tolerance is not measured again.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FIDELITY_CERTIFICATE_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FIDELITY_CERTIFICATE_H
@@ -43,7 +43,7 @@ namespace ILSA {
 /// vertices of face `f`, each once, `f` first (at the input it is the face
 /// itself); at most `capacity` (more only tighten the bound).
 struct Face_candidates {
-  static constexpr std::size_t capacity = 64;
+  static constexpr std::size_t capacity = 128;
   std::array<Index, capacity> face;
   std::size_t n = 0;
 
@@ -59,6 +59,18 @@ struct Face_candidates {
         if (!listed) face[n++] = *g;
       }
   }
+
+  /// Adds the faces around the neighbours of the vertices of `f`.
+  void add_second_ring(const Flat_mesh& m, std::size_t f) {
+    const std::size_t first = n;
+    for (Index v : m.faces[f])
+      for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w)
+        for (const Index* g = m.vertex_faces.first(*w); g != m.vertex_faces.last(*w) && n < capacity; ++g)
+          if (std::find(face.begin() + std::ptrdiff_t(first), face.begin() + std::ptrdiff_t(n), *g) ==
+                  face.begin() + std::ptrdiff_t(n) &&
+              std::find(face.begin(), face.begin() + std::ptrdiff_t(first), *g) == face.begin() + std::ptrdiff_t(first))
+            face[n++] = *g;
+  }
 };
 
 class Fidelity_certificate {
@@ -68,115 +80,171 @@ public:
   Fidelity_certificate(const Flat_mesh& mesh, double tolerance)
       : m_(mesh), tolerance_(tolerance), limit_(tolerance - certificate_margin) {
     if (!enabled()) return;
-    const std::size_t nf = m_.number_of_faces();
-    travel_.assign(m_.number_of_vertices(), 0.f);
-    output_bound_.assign(nf, 0.f);
-    output_travel_.assign(nf, {0.f, 0.f, 0.f});
-    input_bound_.assign(nf, 0.f);
-    input_travel_.assign(nf, 0.);
-    output_stamp_.assign(nf, 0);
-    input_stamp_.assign(nf, 0);
+    output_.assign(m_.number_of_faces(), false);
+    input_.assign(m_.number_of_faces(), true);
   }
 
   bool enabled() const { return std::isfinite(tolerance_); }
 
-  /// Vertex `v` moved by `length`: its path grows (rounded up, so that it stays
-  /// at least the distance between any two of its positions).
-  void add_travel(std::size_t v, double length) {
-    if (enabled()) travel_[v] = float_rounded_up(double(travel_[v]) + length);
-  }
-
-  /// Checks the faces whose bounds the moves of `changed` (positions `pos`)
-  /// may have changed, and calls `blame(w)` for each vertex a failed face
-  /// depends on (in face order: the result does not depend on the threads).
+  /// Checks the faces whose bounds the moves of `changed` (from `previous`,
+  /// the accepted positions, to `next`) may have changed, and calls
+  /// `blame(w)` for vertices a failed face depends on, in face order (the
+  /// result does not depend on the threads); `blame(w)` returns whether the
+  /// move of `w` is shortened.
   template <class ConcurrencyTag, class Blame>
-  void check(const std::vector<Vec3>& pos, const std::vector<Index>& changed, const Blame& blame) {
+  void check(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, const std::vector<Index>& changed,
+             const Blame& blame) {
     if (!enabled() || changed.empty()) return;
-    next_stamp();
-    outputs_.clear(), inputs_.clear();
-    for (std::size_t v : changed) {
-      for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-        if (output_stamp_[*f] != stamp_) output_stamp_[*f] = stamp_, outputs_.push_back(*f);
-        mark_input_faces_of(*f);
-      }
+    if (++stamp_ == 0) {
+      for (Side* side : {&output_, &input_}) std::fill(side->stamp.begin(), side->stamp.end(), 0);
+      stamp_ = 1;
     }
-    output_failed_.assign(outputs_.size(), 0);
-    input_failed_.assign(inputs_.size(), 0);
-    parallel_for<ConcurrencyTag>(outputs_.size(), [&](std::size_t i) { output_failed_[i] = !certify_output(pos, outputs_[i]); });
-    parallel_for<ConcurrencyTag>(inputs_.size(), [&](std::size_t i) { input_failed_[i] = !certify_input(pos, inputs_[i]); });
-    for (std::size_t i = 0; i < outputs_.size(); ++i)
-      if (output_failed_[i])
-        for (Index w : m_.faces[outputs_[i]]) blame(w);
-    for (std::size_t i = 0; i < inputs_.size(); ++i)
-      if (input_failed_[i]) for_each_dependency(inputs_[i], blame);
+    for (Side* side : {&output_, &input_}) side->checked.clear();
+    for (std::size_t v : changed)
+      for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
+        output_.mark(*f, stamp_);
+        // The input faces whose candidates include the smoothed face `f`:
+        // those with a vertex of `f`, and those bounded against the second
+        // ring with a vertex next to one of `f`.
+        for (Index u : m_.faces[*f]) {
+          for (const Index* t = m_.vertex_faces.first(u); t != m_.vertex_faces.last(u); ++t) input_.mark(*t, stamp_);
+          for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
+            for (const Index* t = m_.vertex_faces.first(*w); t != m_.vertex_faces.last(*w); ++t)
+              if (input_.wide(*t)) input_.mark(*t, stamp_);
+        }
+      }
+    for (Side* side : {&output_, &input_}) side->failed.assign(side->checked.size(), 0);
+    parallel_for<ConcurrencyTag>(output_.checked.size(), [&](std::size_t i) {
+      const std::size_t f = output_.checked[i];
+      double drift = 0;
+      for (Index w : m_.faces[f]) drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm());
+      output_.failed[i] =
+          !output_.certify(f, std::sqrt(drift), limit_, [&](bool&) { return output_distance(next, f); });
+    });
+    parallel_for<ConcurrencyTag>(input_.checked.size(), [&](std::size_t i) {
+      const std::size_t t = input_.checked[i];
+      Face_candidates candidates(m_, t);
+      const std::size_t near = candidates.n;
+      if (input_.accepted_wide[t]) candidates.add_second_ring(m_, t);
+      double drift = 0;
+      for_each_dependency(candidates, [&](std::size_t w) {
+        drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm());
+      });
+      input_.failed[i] = !input_.certify(t, std::sqrt(drift), limit_, [&](bool& wide) {
+        // The first ring, and if that fails the second ring too (smoothed
+        // vertices slide on the input, along a crease sometimes farther than
+        // the first ring of the input face reaches).
+        candidates.n = near;
+        const double b = input_distance(next, t, candidates);
+        wide = !(b <= limit_);
+        if (!wide) return b;
+        candidates.add_second_ring(m_, t);
+        return input_distance(next, t, candidates);
+      });
+    });
+    for (std::size_t i = 0; i < output_.checked.size(); ++i)
+      if (output_.failed[i]) {
+        for (Index w : m_.faces[output_.checked[i]]) blame(w);
+      }
+    // An input face that fails shortens the moves of its own vertices first:
+    // the smoothed faces around them are its candidates; only when none of them
+    // can be shortened, those of the other vertices it depends on.
+    for (std::size_t i = 0; i < input_.checked.size(); ++i) {
+      if (!input_.failed[i]) continue;
+      const std::size_t t = input_.checked[i];
+      bool blamed = false;
+      for (Index w : m_.faces[t]) blamed = blame(w) || blamed;
+      Face_candidates candidates(m_, t);
+      if (!blamed) for_each_dependency(candidates, [&](std::size_t w) { blamed = blame(w) || blamed; });
+      candidates.add_second_ring(m_, t);
+      if (!blamed) for_each_dependency(candidates, blame);
+    }
   }
 
-  /// The largest distance between the smoothed surface at `pos` and the input
-  /// surface, both ways, certified: at most the tolerance when every position
-  /// was accepted by check(); infinity without a tolerance.
-  double largest_bound(const std::vector<Vec3>& pos) const {
+  /// The positions the safety check ends with are accepted: each face checked
+  /// since the last call keeps the bound of its last check, which was made
+  /// after the last move of its vertices (the check ends with a round in
+  /// which no face fails).
+  void accept() {
+    if (!enabled()) return;
+    for (Side* side : {&output_, &input_}) side->accept();
+  }
+
+  /// The largest distance between the smoothed surface at the accepted
+  /// positions and the input surface, both ways, certified: at most the
+  /// tolerance; infinity without a tolerance.
+  double largest_bound() const {
     if (!enabled()) return std::numeric_limits<double>::infinity();
     double worst = 0;
-    for (std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      double out = double(output_bound_[f]) + output_drift(f), in = double(input_bound_[f]) + input_drift(f);
-      if (out > limit_) out = (std::min)(out, output_distance(pos, f, limit_));
-      if (in > limit_) in = (std::min)(in, input_distance(pos, f, limit_));
-      worst = (std::max)({worst, out, in});
-    }
+    for (const Side* side : {&output_, &input_})
+      for (float b : side->accepted) worst = (std::max)(worst, double(b));
     return worst;
   }
 
 private:
-  // The stamps tell the faces already listed in this check; they start again
-  // from 1 before they overflow.
-  void next_stamp() {
-    if (++stamp_ == 0) {
-      std::fill(output_stamp_.begin(), output_stamp_.end(), 0);
-      std::fill(input_stamp_.begin(), input_stamp_.end(), 0);
-      stamp_ = 1;
+  // The bounds of one direction, per face.
+  struct Side {
+    std::vector<float> accepted;     // a bound at the accepted positions (rounded up)
+    std::vector<float> trial;        // a bound at the positions of the face's last check, if it passed
+    std::vector<std::uint32_t> stamp; // the last check that listed the face
+    std::vector<unsigned char> in_call; // listed since the last accept()
+    std::vector<Index> checked, called; // the faces of the current check; those listed since the last accept()
+    std::vector<unsigned char> failed;  // per face of `checked`
+    // Input faces: whether the accepted bound, or the trial one, was found
+    // against the second ring of candidates too (Face_candidates::add_second_ring()).
+    std::vector<unsigned char> accepted_wide, trial_wide;
+
+    void assign(std::size_t n, bool rings) {
+      accepted.assign(n, 0.f), trial.assign(n, 0.f), stamp.assign(n, 0), in_call.assign(n, 0);
+      if (rings) accepted_wide.assign(n, 0), trial_wide.assign(n, 0);
     }
-  }
+    bool wide(std::size_t f) const { return accepted_wide[f] || trial_wide[f]; }
+    void mark(std::size_t f, std::uint32_t s) {
+      if (stamp[f] == s) return;
+      stamp[f] = s;
+      checked.push_back(Index(f));
+      if (!in_call[f]) in_call[f] = 1, called.push_back(Index(f));
+    }
+    // The accepted bound grown by `drift`, or else `bound()`, if within `limit`.
+    // `bound(wide)` sets `wide` when it used the second ring.
+    template <class Bound> bool certify(std::size_t f, double drift, double limit, const Bound& bound) {
+      const double grown = double(accepted[f]) + drift * (1. + 1e-9) + 1e-15;
+      bool used_wide = !accepted_wide.empty() && accepted_wide[f];
+      const double b = grown <= limit ? grown : bound(used_wide);
+      const bool ok = b <= limit;
+      trial[f] = ok ? float_rounded_up(b) : std::numeric_limits<float>::infinity();
+      if (ok && !trial_wide.empty()) trial_wide[f] = used_wide;
+      return ok;
+    }
+    void accept() {
+      for (Index f : called) {
+        if (trial[f] != std::numeric_limits<float>::infinity()) {
+          accepted[f] = trial[f];
+          if (!accepted_wide.empty()) accepted_wide[f] = trial_wide[f];
+        }
+        if (!trial_wide.empty()) trial_wide[f] = 0;
+        in_call[f] = 0;
+      }
+      called.clear();
+    }
+  };
 
-  // The input faces whose candidates include the smoothed face `f`: those with
-  // a vertex of `f`.
-  void mark_input_faces_of(std::size_t f) {
-    for (Index u : m_.faces[f])
-      for (const Index* t = m_.vertex_faces.first(u); t != m_.vertex_faces.last(u); ++t)
-        if (input_stamp_[*t] != stamp_) input_stamp_[*t] = stamp_, inputs_.push_back(*t);
-  }
-
-  // Calls `f(w)` for the vertices the bound of input face `t` depends on: those
-  // of its candidates (a vertex may come more than once).
-  template <class F> void for_each_dependency(std::size_t t, const F& f) const {
-    for_each_dependency(Face_candidates(m_, t), f);
-  }
   template <class F> void for_each_dependency(const Face_candidates& candidates, const F& f) const {
     for (std::size_t k = 0; k < candidates.n; ++k)
       for (Index w : m_.faces[candidates.face[k]]) f(w);
   }
 
-  double output_drift(std::size_t f) const {
-    double drift = 0;
-    for (std::size_t k = 0; k < 3; ++k)
-      drift = (std::max)(drift, double(travel_[m_.faces[f][k]]) - double(output_travel_[f][k]));
-    return drift * (1. + 1e-9);
+  // Smoothed face `f` at `pos` against the input faces around its vertices,
+  // and if that fails, also around their neighbours (smoothed vertices slide
+  // on the input, along a crease sometimes farther than their first ring).
+  double output_distance(const std::vector<Vec3>& pos, std::size_t f) const {
+    Face_candidates candidates(m_, f);
+    const double near = output_distance(pos, f, candidates);
+    if (near <= limit_) return near;
+    candidates.add_second_ring(m_, f);
+    return output_distance(pos, f, candidates);
   }
-  double input_travel(const Face_candidates& candidates) const {
-    double sum = 0;
-    for_each_dependency(candidates, [&](std::size_t w) { sum += double(travel_[w]); });
-    return sum;
-  }
-  // Each vertex moved by at most the growth of its path; their sum bounds the largest.
-  double input_drift(std::size_t t) const {
-    return (input_travel(Face_candidates(m_, t)) - input_travel_[t]) * (1. + 1e-9) + 1e-15;
-  }
-
-  // Smoothed face `f` at `pos` against the input faces around its vertices.
-  double output_distance(const std::vector<Vec3>& pos, std::size_t f, double limit) const {
-    return output_distance(pos, f, Face_candidates(m_, f), limit);
-  }
-  double output_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
-                         double limit) const {
+  double output_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates) const {
     const auto& t = m_.faces[f];
     return triangle_bound(
         pos[t[0]], pos[t[1]], pos[t[2]], candidates.n,
@@ -184,14 +252,10 @@ private:
           const auto& s = m_.faces[candidates.face[k]];
           return std::array<Vec3, 3>{m_.points[s[0]], m_.points[s[1]], m_.points[s[2]]};
         },
-        limit);
+        limit_);
   }
   // Input face `f` against the smoothed faces (at `pos`) around its vertices.
-  double input_distance(const std::vector<Vec3>& pos, std::size_t f, double limit) const {
-    return input_distance(pos, f, Face_candidates(m_, f), limit);
-  }
-  double input_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
-                        double limit) const {
+  double input_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates) const {
     const auto& t = m_.faces[f];
     return triangle_bound(
         m_.points[t[0]], m_.points[t[1]], m_.points[t[2]], candidates.n,
@@ -199,39 +263,13 @@ private:
           const auto& s = m_.faces[candidates.face[k]];
           return std::array<Vec3, 3>{pos[s[0]], pos[s[1]], pos[s[2]]};
         },
-        limit);
-  }
-
-  bool certify_output(const std::vector<Vec3>& pos, std::size_t f) {
-    if (double(output_bound_[f]) + output_drift(f) <= limit_) return true;
-    const double bound = output_distance(pos, f, limit_);
-    if (!(bound <= limit_)) return false;
-    output_bound_[f] = float_rounded_up(bound);
-    for (std::size_t k = 0; k < 3; ++k) output_travel_[f][k] = travel_[m_.faces[f][k]];
-    return true;
-  }
-  bool certify_input(const std::vector<Vec3>& pos, std::size_t t) {
-    const Face_candidates candidates(m_, t);
-    const double travel = input_travel(candidates);
-    if (double(input_bound_[t]) + (travel - input_travel_[t]) * (1. + 1e-9) + 1e-15 <= limit_) return true;
-    const double bound = input_distance(pos, t, candidates, limit_);
-    if (!(bound <= limit_)) return false;
-    input_bound_[t] = float_rounded_up(bound);
-    input_travel_[t] = travel;
-    return true;
+        limit_);
   }
 
   const Flat_mesh& m_;
   double tolerance_, limit_;
-  std::vector<float> travel_;                      // per vertex: length of its path so far (rounded up)
-  std::vector<float> output_bound_;                // per face: its last bound, smoothed to input
-  std::vector<std::array<float, 3>> output_travel_; // travel_ of its vertices then
-  std::vector<float> input_bound_;                 // per face: its last bound, input to smoothed
-  std::vector<double> input_travel_;               // input_travel() then
-  std::vector<std::uint32_t> output_stamp_, input_stamp_;
+  Side output_, input_; // smoothed faces to the input; input faces to the smoothed surface
   std::uint32_t stamp_ = 0;
-  std::vector<Index> outputs_, inputs_;                   // the faces of the current check
-  std::vector<unsigned char> output_failed_, input_failed_; // their results
 };
 
 } // namespace ILSA

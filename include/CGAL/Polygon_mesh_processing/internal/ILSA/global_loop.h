@@ -100,7 +100,7 @@ public:
     // the safety check or the projection no bound is enforced.
     const bool certified = p_.use_safety && p_.do_project;
     const double none = std::numeric_limits<double>::infinity();
-    stats.certified_distance = certified ? safety_.certified_distance(pos_) : none;
+    stats.certified_distance = certified ? safety_.certified_distance() : none;
     stats.certified_crease_distance = certified ? safety_.certified_crease_distance(pos_) : none;
   }
 

@@ -108,7 +108,7 @@ public:
   /// The largest distances between the smoothed surface at `pos` and the
   /// input, and between their feature lines, both ways, certified
   /// (normalised units; infinity without a tolerance).
-  double certified_distance(const std::vector<Vec3>& pos) const { return surface_.largest_bound(pos); }
+  double certified_distance() const { return surface_.largest_bound(); }
   double certified_crease_distance(const std::vector<Vec3>& pos) const { return creases_.largest_bound(pos); }
 
   struct Counts {
@@ -138,7 +138,7 @@ public:
   Counts enforce(const std::vector<Vec3>& previous, const std::vector<Index>& previous_home, const std::vector<Vec3>& d,
                  const std::vector<Index>& moved, std::vector<Vec3>& next, std::vector<Index>& next_home,
                  const Project& project, std::vector<double>& face_scratch) {
-    start_call(previous, moved, next);
+    start_call(moved);
     // to_check: vertices for the cheap tests. (The first round checks `moved`
     // itself, not a copy.)
     std::vector<Index> to_check, offenders;
@@ -220,10 +220,9 @@ private:
   // certificates), so there are at most 2 (halvings_ + 1) rounds per moved
   // vertex, plus two. If the stamps could overflow in this call, they start
   // again from 0: stamps of earlier calls only need to be older than this call's.
-  void start_call(const std::vector<Vec3>& previous, const std::vector<Index>& moved, const std::vector<Vec3>& next) {
+  void start_call(const std::vector<Index>& moved) {
     for (std::size_t v : moved) {
       tries_[v] = 0, is_moved_[v] = 1;
-      surface_.add_travel(v, (next[v] - previous[v]).norm());
       note_change(v);
     }
     if (std::size_t(round_) + 2 * (halvings_ + 2) * (moved.size() + 1) >
@@ -237,6 +236,7 @@ private:
   // Ends a call: what it did to the moves of `moved`.
   Counts finish_call(const std::vector<Index>& moved) {
     ++call_;
+    surface_.accept();
     Counts counts;
     for (std::size_t v : moved) {
       is_moved_[v] = 0;
@@ -367,13 +367,17 @@ private:
     for (std::size_t v : changed_) in_changed_[v] = 0;
     auto blamer = [&](Test test) {
       return [&, test](std::size_t w) {
-        if (!is_moved_[w] || tries_[w] > halvings_ || bad_[w] || next[w] == previous[w]) return;
-        failed(w, test);
-        offenders.push_back(Index(w));
+        if (!is_moved_[w] || tries_[w] > halvings_ || next[w] == previous[w]) return false;
+        if (!bad_[w]) {
+          failed(w, test);
+          offenders.push_back(Index(w));
+        }
+        return true;
       };
     };
-    surface_.template check<ConcurrencyTag>(next, changed_, blamer(Test::fidelity));
+    // The crease bound first: a move it shortens counts as limited by it.
     creases_.template check<ConcurrencyTag>(next, changed_, blamer(Test::crease));
+    surface_.template check<ConcurrencyTag>(previous, next, changed_, blamer(Test::fidelity));
     changed_.clear();
     for (std::size_t v : offenders) bad_[v] = 0;
   }
@@ -389,7 +393,6 @@ private:
     parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
       const std::size_t v = offenders[i];
       ++tries_[v];
-      const Vec3 before = next[v];
       if (tries_[v] <= halvings_) {
         const double t = std::ldexp(1., -int(tries_[v]));
         const Vec3 target = previous[v] + d[v];
@@ -400,7 +403,6 @@ private:
         next[v] = previous[v];
         next_home[v] = previous_home[v];
       }
-      surface_.add_travel(v, (next[v] - before).norm());
     });
     for (std::size_t v : offenders) note_change(v);
   }
