@@ -41,7 +41,7 @@ for mesh in "${meshes[@]}"; do
   for c in $contrasts; do
     out=$("$tool" "$mesh" "$work/out.off" "${flags[@]}" --crease-contrast "$c" 2>&1) || { row+=" failed |"; continue; }
     q=$(sed -nE 's/^after : aspect ratio q min [0-9.]+ mean ([0-9.]+).*/\1/p' <<<"$out")
-    h=$(sed -nE 's/.*Hausdorff ([0-9.e+-]+),.*/\1/p' <<<"$out")
+    h=$(sed -nE 's/.*Hausdorff ([0-9.e+-]+)[ ,].*/\1/p' <<<"$out")
     crease=$(sed -nE 's/.*crease deviation \([0-9]+ sharp edges, both ways\) max ([0-9.e+-]+).*/\1/p' <<<"$out")
     lines=$(sed -nE 's/^feature lines without the contrast: .* max ([0-9.e+-]+) mean.*/\1/p' <<<"$out")
     ridge=$(sed -nE 's/^vertices: .* ([0-9]+) ridge.*/\1/p' <<<"$out")

@@ -60,7 +60,7 @@ for mu in $MU; do for wl in $WL; do for wa in $WA; do for an in $ANGLE; do for f
   secs=$(grep '^time' <<<"$out" | sed -E 's/time: ([0-9.]+) s.*/\1/')
   ran=$(grep '^time' <<<"$out" | sed -E 's/.* for ([0-9]+) iterations.*/\1/')
   flips=$(grep '^fidelity' <<<"$out" | sed -E 's/fidelity: ([0-9]+) flipped.*/\1/')
-  haus=$(grep '^fidelity' <<<"$out" | sed -E 's/.*Hausdorff ([0-9.e+-]+),.*/\1/')
+  haus=$(grep '^fidelity' <<<"$out" | sed -E 's/.*Hausdorff ([0-9.e+-]+)[ ,].*/\1/')
   crease=$(grep '^fidelity' <<<"$out" | sed -E 's/.*both ways\) max ([0-9.e+-]+) .*/\1/')
   fixed=$(grep '^vertices' <<<"$out" | sed -E 's/.* ([0-9]+) corner \(([0-9]+) crease kinks\), ([0-9]+) boundary/\1+\3/')
   kinks=$(grep '^vertices' <<<"$out" | sed -E 's/.*\(([0-9]+) crease kinks\).*/\1/')

@@ -274,8 +274,9 @@ template <class Mesh> void test_named_parameters() {
                                 CGAL::parameters::relax_constraints(true).ilsa_penalty_mu(0.5).number_of_iterations(3));
   assert(points_of(x) == points_of(y) && !(points_of(x) == points_of(m)));
 
-  // mesh_fidelity_ilsa: random_seed makes the Hausdorff distance repeatable, and
-  // the caller's CGAL default generator is left as it was.
+  // mesh_fidelity_ilsa: the Hausdorff distance (CGAL's bounded-error one) is
+  // repeatable, whatever the named parameters' order, and the caller's CGAL
+  // default generator is left as it was.
   CGAL::get_default_random() = CGAL::Random(7);
   const auto f1 = PMP::mesh_fidelity_ilsa(m, x, CGAL::parameters::random_seed(3).ilsa_feature_angle(30.));
   const int drawn = CGAL::get_default_random().get_int(0, 1 << 30);

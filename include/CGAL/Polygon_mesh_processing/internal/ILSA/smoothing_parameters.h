@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <sstream>
 #include <string>
 
 namespace CGAL {
@@ -29,27 +30,38 @@ namespace ILSA {
 /// are checked as given, before their conversion to `std::size_t`.
 inline void check_smoothing_parameters(const Smoothing_parameters& p, double iterations, double sweeps,
                                        double penalty_sweeps) {
-  auto require = [](bool ok, const std::string& what) {
-    if (!ok) throw ILSA_error(what);
+  // The message names the parameter, its range and the value given.
+  auto require = [](bool ok, const std::string& what, double value) {
+    if (!ok) {
+      std::ostringstream message;
+      message << what << ", got " << value;
+      throw ILSA_error(message.str());
+    }
   };
-  require(p.quality_floor >= 0 && p.quality_floor < 1, "ilsa_quality_floor must be in [0, 1)");
-  require(p.fidelity_tolerance > 0, "ilsa_fidelity_tolerance must be positive (infinity disables the check)");
+  require(p.quality_floor >= 0 && p.quality_floor < 1, "ilsa_quality_floor must be in [0, 1)", p.quality_floor);
+  require(p.fidelity_tolerance > 0, "ilsa_fidelity_tolerance must be positive (infinity disables the bound)",
+          p.fidelity_tolerance);
   require(p.minimum_gain >= 0 && std::isfinite(p.minimum_gain),
-          "ilsa_minimum_quality_gain must be non-negative and finite (0 disables this stop)");
+          "ilsa_minimum_quality_gain must be non-negative and finite (0 disables this stop)", p.minimum_gain);
   require(p.minimum_remaining_gain >= 0 && std::isfinite(p.minimum_remaining_gain),
-          "ilsa_minimum_remaining_gain must be non-negative and finite (0 disables this stop)");
+          "ilsa_minimum_remaining_gain must be non-negative and finite (0 disables this stop)",
+          p.minimum_remaining_gain);
   require(p.retry_distance >= 0 && std::isfinite(p.retry_distance),
-          "ilsa_retry_distance must be non-negative and finite (0 retries every dropped move at once)");
-  require(iterations >= 0 && iterations <= 100000, "number_of_iterations must be in [0, 100000]");
-  require(sweeps >= 1 && sweeps <= 10000, "number_of_relaxation_steps must be in [1, 10000]");
-  require(penalty_sweeps >= 1 && penalty_sweeps <= 10000, "ilsa_penalty_steps must be in [1, 10000]");
-  require(p.relax1 > 0 && p.relax1 <= 1, "ilsa_relaxation must be in (0, 1]");
-  require(p.penalty.relax2 > 0 && p.penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]");
-  require(p.penalty.mu > 0 && std::isfinite(p.penalty.mu), "ilsa_penalty_mu must be positive and finite");
+          "ilsa_retry_distance must be non-negative and finite (0 retries every dropped move at once)",
+          p.retry_distance);
+  require(iterations >= 0 && iterations <= 100000, "number_of_iterations must be in [0, 100000]", iterations);
+  require(sweeps >= 1 && sweeps <= 10000, "number_of_relaxation_steps must be in [1, 10000]", sweeps);
+  require(penalty_sweeps >= 1 && penalty_sweeps <= 10000, "ilsa_penalty_steps must be in [1, 10000]",
+          penalty_sweeps);
+  require(p.relax1 > 0 && p.relax1 <= 1, "ilsa_relaxation must be in (0, 1]", p.relax1);
+  require(p.penalty.relax2 > 0 && p.penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]",
+          p.penalty.relax2);
+  require(p.penalty.mu > 0 && std::isfinite(p.penalty.mu), "ilsa_penalty_mu must be positive and finite",
+          p.penalty.mu);
   require(p.penalty.length_weight >= 0 && std::isfinite(p.penalty.length_weight),
-          "ilsa_length_weight must be non-negative and finite");
+          "ilsa_length_weight must be non-negative and finite", p.penalty.length_weight);
   require(p.penalty.area_weight >= 0 && std::isfinite(p.penalty.area_weight),
-          "ilsa_area_weight must be non-negative and finite");
+          "ilsa_area_weight must be non-negative and finite", p.penalty.area_weight);
 }
 
 /// Reads the smoothing parameters of `np`; throws `ILSA_error` for a value out of range.
