@@ -14,6 +14,7 @@
 #include "ilsa_test_utils.h"
 
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry> // cross(), compared with the core's own 3-vector
@@ -768,7 +769,7 @@ template <class Mesh> void test_degenerate_reference() {
   const Mesh tm = to_mesh<Mesh>(s);
   const Package_setup<Mesh> setup(tm);
   const ilsa::Flat_mesh& m = setup.m;
-  const ilsa::Move_safety safety(m, setup.c, setup.incidences, setup.projector, 0.5, 3e-4, true, 3);
+  const ilsa::Move_safety safety(m, setup.c, setup.incidences, 0.5, 3e-4, true, 3);
   std::size_t degenerate = 0;
   for (std::size_t f = 0; f < m.number_of_faces(); ++f) {
     const auto& t = m.faces[f];
@@ -879,7 +880,7 @@ template <class Mesh> void test_collapsed_faces_open_right_way() {
     const Package_setup<Mesh> setup(tm);
     const ilsa::Flat_mesh& m = setup.m;
     std::vector<double> scratch(m.number_of_faces());
-    ilsa::Move_safety safety(m, setup.c, setup.incidences, setup.projector, 0., std::numeric_limits<double>::infinity(),
+    ilsa::Move_safety safety(m, setup.c, setup.incidences, 0., std::numeric_limits<double>::infinity(),
                              false, 3);
     // Vertex (2, 1): at (1 + gap, 1) and next to (2, 0), unlike (1, 1). The
     // package's coordinates are centred and divided by the diagonal.
@@ -1144,9 +1145,11 @@ template <class Mesh> void test_retry_distance() {
   std::cout << "hemisphere at its floor: " << at_floor.number_of_rejected_moves << " rejected, "
             << at_floor.number_of_settled_skips << " settled skips" << std::endl;
   assert(at_floor.number_of_rejected_moves > 0 && at_floor.number_of_settled_skips == 0);
-  // With the fidelity bound its drops settle vertices.
+  // With a fidelity bound that drops moves (1e-4: the default lets them
+  // all pass here), its drops settle vertices.
   hemisphere = read_mesh<Mesh>(data_file("hemisphere.off"));
-  const auto bounded = PMP::smooth_surface_mesh_ilsa(hemisphere, CGAL::parameters::ilsa_reject_worsening_moves(false));
+  const auto bounded = PMP::smooth_surface_mesh_ilsa(
+      hemisphere, CGAL::parameters::ilsa_reject_worsening_moves(false).ilsa_fidelity_tolerance(1e-4));
   std::cout << "hemisphere with the fidelity bound: " << bounded.number_of_settled_skips << " settled skips"
             << std::endl;
   assert(bounded.number_of_settled_skips > 0);
@@ -1379,10 +1382,30 @@ void test_documented_defaults() {
   std::cout << "documented defaults: " << checked << " statements agree with internal/ILSA/defaults.h (reference "
             << smoother << " + " << classification << " + " << quality << ", manual " << manual << ", tool " << tool
             << ")" << std::endl;
-  assert(smoother >= 20 && classification >= 4 && quality >= 4 && manual >= 20 && tool == 21);
+  assert(smoother >= 20 && classification >= 4 && quality >= 4 && manual >= 20 && tool == 20);
+}
+
+// `geom_traits`, as every CGAL PMP function takes it: a Surface_mesh of
+// Simple_cartesian<double> points with its kernel, the same result as with
+// the kernel deduced from the points.
+void test_geom_traits() {
+  using SC = CGAL::Simple_cartesian<double>;
+  using SC_mesh = CGAL::Surface_mesh<SC::Point_3>;
+  SC_mesh with_traits, deduced;
+  const bool read = CGAL::IO::read_polygon_mesh(data_file("elephant.off"), with_traits);
+  assert(read);
+  CGAL_USE(read);
+  deduced = with_traits;
+  const auto a = PMP::smooth_surface_mesh_ilsa(with_traits, CGAL::parameters::geom_traits(SC()));
+  const auto b = PMP::smooth_surface_mesh_ilsa(deduced);
+  assert(a.number_of_iterations > 0 && a.number_of_moves == b.number_of_moves);
+  for (auto v : vertices(deduced)) assert(with_traits.point(v) == deduced.point(v));
+  std::cout << "geom_traits(Simple_cartesian<double>()): " << a.number_of_moves << " moves, the same points"
+            << std::endl;
 }
 
 int main() {
+  test_geom_traits();
   test_documented_defaults();
   test_local_projection<Surface_mesh>();
   test_local_projection<Polyhedron>();

@@ -89,6 +89,14 @@ std::vector<unsigned char> vertices_in_range(const VertexRange& range,
  *     \cgalParamType{a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and `%Point_3` as value}
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a class model of `Kernel`}
+ *     \cgalParamDefault{a CGAL Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+ *     \cgalParamExtra{The geometric traits class must be compatible with the vertex point type. The smoother
+ * computes in double precision on the points' Cartesian coordinates (`CGAL::to_double()`), whatever the kernel,
+ * and writes the results back as points of this type.}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_index_map}
  *     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and
  * `num_vertices(tm) - 1`} \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and
