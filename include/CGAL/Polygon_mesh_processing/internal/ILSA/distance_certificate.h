@@ -149,9 +149,10 @@ double corner_bound(const Polygon2& piece, const Frame& frame, const Triangle& t
 }
 
 // Whether every corner of `piece` is within `limit` of a candidate (if not,
-// no choice of pieces can bound the triangle).
+// no choice of pieces can bound the triangle); `far` is then such a corner.
 template <class Candidate>
-bool corners_near(const Polygon2& piece, const Frame& frame, std::size_t n, const Candidate& candidate, double limit2) {
+bool corners_near(const Polygon2& piece, const Frame& frame, std::size_t n, const Candidate& candidate, double limit2,
+                  Vec3* far = nullptr) {
   for (int i = 0; i < piece.n; ++i) {
     const Vec3 x = frame.to3(piece.p[std::size_t(i)]);
     bool near = false;
@@ -159,7 +160,10 @@ bool corners_near(const Polygon2& piece, const Frame& frame, std::size_t n, cons
       const std::array<Vec3, 3> t = candidate(k);
       near = squared_distance_to_triangle(x, t[0], t[1], t[2]) <= limit2;
     }
-    if (!near) return false;
+    if (!near) {
+      if (far) *far = x;
+      return false;
+    }
   }
   return true;
 }
@@ -231,8 +235,11 @@ template <class Candidate> double segment_bound(const Vec3& p, const Vec3& q, st
 /// `limit` is found. Candidates that cover much of the triangle are best
 /// given first: each one bounds the piece under its footprint, and a first
 /// candidate that bounds the whole triangle at its corners ends the work.
-template <class Candidate> double triangle_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n,
-                                                 const Candidate& candidate, double limit) {
+/// When the bound fails because a point of the triangle is farther than
+/// `limit` from every candidate, `*far` is that point and `*has_far` true.
+template <class Candidate>
+double triangle_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, const Candidate& candidate,
+                      double limit, Vec3* far = nullptr, bool* has_far = nullptr) {
   using namespace certificate;
   const double limit2 = limit * limit, inf = std::numeric_limits<double>::infinity();
   if (n == 0) return inf;
@@ -314,14 +321,17 @@ template <class Candidate> double triangle_bound(const Vec3& a, const Vec3& b, c
         ++i;
         continue;
       }
-      Vec3 far;
-      const double bound = corner_bound(*inside, frame, t, limit2, &far);
+      Vec3 far_corner;
+      const double bound = corner_bound(*inside, frame, t, limit2, &far_corner);
       if (bound > limit2) {
         // A point of the triangle farther than `limit` from every candidate:
         // no choice of pieces can bound it.
         Polygon2 point;
-        point.n = 1, point.p[0] = frame.to2(far);
-        if (!corners_near(point, frame, n, candidate, limit2)) return inf;
+        point.n = 1, point.p[0] = frame.to2(far_corner);
+        if (!corners_near(point, frame, n, candidate, limit2, far)) {
+          if (has_far) *has_far = far != nullptr;
+          return inf;
+        }
         ++i;
         continue;
       }
@@ -350,7 +360,11 @@ template <class Candidate> double triangle_bound(const Vec3& a, const Vec3& b, c
       worst = (std::max)(worst, best);
       continue;
     }
-    if (--halvings < 0 || !corners_near(piece, frame, n, candidate, limit2)) return inf;
+    if (--halvings < 0) return inf;
+    if (!corners_near(piece, frame, n, candidate, limit2, far)) {
+      if (has_far) *has_far = far != nullptr;
+      return inf;
+    }
     // The cut: from the middle of the longest side to the middle of the
     // side opposite (or the corner opposite).
     int longest = 0;

@@ -62,14 +62,24 @@ struct Face_candidates {
 
   /// Adds the faces around the neighbours of the vertices of `f`.
   void add_second_ring(const Flat_mesh& m, std::size_t f) {
-    const std::size_t first = n;
-    for (Index v : m.faces[f])
-      for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w)
-        for (const Index* g = m.vertex_faces.first(*w); g != m.vertex_faces.last(*w) && n < capacity; ++g)
-          if (std::find(face.begin() + std::ptrdiff_t(first), face.begin() + std::ptrdiff_t(n), *g) ==
-                  face.begin() + std::ptrdiff_t(n) &&
-              std::find(face.begin(), face.begin() + std::ptrdiff_t(first), *g) == face.begin() + std::ptrdiff_t(first))
-            face[n++] = *g;
+    const auto& t = m.faces[f];
+    // A face is listed already if it has a vertex of `f` (the first ring) or
+    // a neighbour visited before.
+    std::array<Index, 64> visited;
+    std::size_t k = 0;
+    auto seen = [&](Index u) {
+      return u == t[0] || u == t[1] || u == t[2] ||
+             std::find(visited.begin(), visited.begin() + std::ptrdiff_t(k), u) != visited.begin() + std::ptrdiff_t(k);
+    };
+    for (Index v : t)
+      for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w) {
+        if (seen(*w) || k == visited.size()) continue;
+        for (const Index* g = m.vertex_faces.first(*w); g != m.vertex_faces.last(*w) && n < capacity; ++g) {
+          const auto& s = m.faces[*g];
+          if (!seen(s[0]) && !seen(s[1]) && !seen(s[2])) face[n++] = *g;
+        }
+        visited[k++] = *w;
+      }
   }
 };
 
@@ -135,10 +145,13 @@ public:
         // vertices slide on the input, along a crease sometimes farther than
         // the first ring of the input face reaches).
         candidates.n = near;
-        const double b = input_distance(next, t, candidates);
+        Vec3 far;
+        bool has_far = false;
+        const double b = input_distance(next, t, candidates, &far, &has_far);
         wide = !(b <= limit_);
         if (!wide) return b;
         candidates.add_second_ring(m_, t);
+        if (has_far && !near_any(far, candidates, near, next)) return b;
         return input_distance(next, t, candidates);
       });
     });
@@ -154,10 +167,12 @@ public:
       const std::size_t t = input_.checked[i];
       bool blamed = false;
       for (Index w : m_.faces[t]) blamed = blame(w) || blamed;
+      if (blamed) continue;
       Face_candidates candidates(m_, t);
-      if (!blamed) for_each_dependency(candidates, [&](std::size_t w) { blamed = blame(w) || blamed; });
+      for_each_dependency(candidates, [&](std::size_t w) { blamed = blame(w) || blamed; });
+      if (blamed) continue;
       candidates.add_second_ring(m_, t);
-      if (!blamed) for_each_dependency(candidates, blame);
+      for_each_dependency(candidates, blame);
     }
   }
 
@@ -239,12 +254,19 @@ private:
   // on the input, along a crease sometimes farther than their first ring).
   double output_distance(const std::vector<Vec3>& pos, std::size_t f) const {
     Face_candidates candidates(m_, f);
-    const double near = output_distance(pos, f, candidates);
+    Vec3 far;
+    bool has_far = false;
+    const double near = output_distance(pos, f, candidates, &far, &has_far);
     if (near <= limit_) return near;
+    const std::size_t first = candidates.n;
     candidates.add_second_ring(m_, f);
+    // A point farther than the tolerance from every candidate of the first
+    // ring and of the second: no certificate against them exists.
+    if (has_far && !near_any(far, candidates, first, m_.points)) return near;
     return output_distance(pos, f, candidates);
   }
-  double output_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates) const {
+  double output_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
+                         Vec3* far = nullptr, bool* has_far = nullptr) const {
     const auto& t = m_.faces[f];
     return triangle_bound(
         pos[t[0]], pos[t[1]], pos[t[2]], candidates.n,
@@ -252,10 +274,20 @@ private:
           const auto& s = m_.faces[candidates.face[k]];
           return std::array<Vec3, 3>{m_.points[s[0]], m_.points[s[1]], m_.points[s[2]]};
         },
-        limit_);
+        limit_, far, has_far);
+  }
+  // Whether `x` is within the limit of one of the candidates from `first` on, at `at`.
+  bool near_any(const Vec3& x, const Face_candidates& candidates, std::size_t first,
+                const std::vector<Vec3>& at) const {
+    for (std::size_t k = first; k < candidates.n; ++k) {
+      const auto& s = m_.faces[candidates.face[k]];
+      if (squared_distance_to_triangle(x, at[s[0]], at[s[1]], at[s[2]]) <= limit_ * limit_) return true;
+    }
+    return false;
   }
   // Input face `f` against the smoothed faces (at `pos`) around its vertices.
-  double input_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates) const {
+  double input_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
+                        Vec3* far = nullptr, bool* has_far = nullptr) const {
     const auto& t = m_.faces[f];
     return triangle_bound(
         m_.points[t[0]], m_.points[t[1]], m_.points[t[2]], candidates.n,
@@ -263,7 +295,7 @@ private:
           const auto& s = m_.faces[candidates.face[k]];
           return std::array<Vec3, 3>{pos[s[0]], pos[s[1]], pos[s[2]]};
         },
-        limit_);
+        limit_, far, has_far);
   }
 
   const Flat_mesh& m_;
