@@ -275,9 +275,8 @@ void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations)
     auto measure = [&](const Mesh& m) {
       const auto f = PMP::mesh_fidelity_ilsa(
           input, m, CGAL::parameters::ilsa_feature_angle(feature_angle).ilsa_compute_hausdorff_distance(false));
-      const double h = PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
-                           input, m, 1e-5 * diagonal) /
-                       diagonal;
+      const double h =
+          PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(input, m, 1e-5 * diagonal) / diagonal;
       return Result{PMP::mesh_quality_ilsa(m).mean_aspect_ratio, h, f.number_of_flipped_faces};
     };
     Mesh peer = input;
@@ -298,7 +297,8 @@ void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations)
     };
     const Result a = ilsa(false), b = ilsa(true);
     Mesh defaults = input;
-    const double certified = PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(defaults).certified_distance;
+    const double certified =
+        PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(defaults).certified_distance;
     const Result d = measure(defaults);
     std::printf("| %s | %.4f / %.2e / %zu | %.4f / %.2e (%.2f) / %zu | %.4f / %.2e (%.2f) / %zu | %+.4f (%+.4f) | "
                 "%.4f / %.2e / %.3f | %.2e / %.3f |\n",

@@ -80,8 +80,8 @@ struct Options {
   unsigned int worst = 0;                                                   // faces listed by --worst
   unsigned int threads = std::max(1u, std::thread::hardware_concurrency()); // 1: sequential
   bool triangulate = false, color_by_quality = false, color_by_type = false;
-  std::string report = "auto";                             // auto, summary or full
-  std::optional<bool> progress;                            // default: on when stderr is a terminal
+  std::string report = "auto";                            // auto, summary or full
+  std::optional<bool> progress;                           // default: on when stderr is a terminal
   static constexpr std::size_t full_report_faces = 20000; // --report auto: full up to this many faces
 };
 
@@ -462,9 +462,8 @@ int run(const Options& o) {
             << (o.threads == 1 || !tbb_available ? std::string("sequential") : std::to_string(o.threads) + " threads")
             << ")\n";
   if (s.number_of_iterations > 0)
-    std::cout << std::scientific << std::setprecision(2)
-              << "certified: Hausdorff distance to the input at most " << s.certified_distance
-              << ", feature lines at most " << s.certified_crease_distance
+    std::cout << std::scientific << std::setprecision(2) << "certified: Hausdorff distance to the input at most "
+              << s.certified_distance << ", feature lines at most " << s.certified_crease_distance
               << " [both ways, relative to the bounding-box diagonal; inf: no bound enforced]\n";
   const bool full = o.report == "full" || (o.report == "auto" && num_faces(mesh) <= Options::full_report_faces);
   const PMP::ILSA_fidelity_summary f =

@@ -84,9 +84,8 @@ void test_bounds_against_samples() {
   }
   // A triangle on a flat mesh of eight triangles around it, lifted a little:
   // certified close to the lift.
-  const std::vector<std::array<ilsa::Vec3, 3>> flat{
-      {ilsa::Vec3(-2, -2, 0), ilsa::Vec3(2, -2, 0), ilsa::Vec3(2, 2, 0)},
-      {ilsa::Vec3(-2, -2, 0), ilsa::Vec3(2, 2, 0), ilsa::Vec3(-2, 2, 0)}};
+  const std::vector<std::array<ilsa::Vec3, 3>> flat{{ilsa::Vec3(-2, -2, 0), ilsa::Vec3(2, -2, 0), ilsa::Vec3(2, 2, 0)},
+                                                    {ilsa::Vec3(-2, -2, 0), ilsa::Vec3(2, 2, 0), ilsa::Vec3(-2, 2, 0)}};
   const double lifted = ilsa::triangle_bound(
       ilsa::Vec3(-1, -1, 1e-3), ilsa::Vec3(1, -0.5, 2e-3), ilsa::Vec3(0, 1, 1e-3), flat.size(),
       [&](std::size_t k) { return flat[k]; }, 1e-2);
@@ -106,8 +105,8 @@ std::size_t max_faces() {
 template <class Mesh, class ConcurrencyTag = CGAL::Sequential_tag>
 Mesh smooth_and_judge(const Mesh& input, double tolerance, const std::string& name) {
   Mesh result = input;
-  const auto stats = PMP::smooth_surface_mesh_ilsa<ConcurrencyTag>(
-      result, CGAL::parameters::ilsa_fidelity_tolerance(tolerance));
+  const auto stats =
+      PMP::smooth_surface_mesh_ilsa<ConcurrencyTag>(result, CGAL::parameters::ilsa_fidelity_tolerance(tolerance));
   const double diagonal = bbox_diagonal(input), error = 1e-5 * diagonal;
   const bool larger = PMP::is_Hausdorff_distance_larger<CGAL::Sequential_tag>(
       input, result, tolerance * diagonal, error, CGAL::parameters::use_one_sided_hausdorff(false),
@@ -115,8 +114,8 @@ Mesh smooth_and_judge(const Mesh& input, double tolerance, const std::string& na
   std::cout << name << " (" << num_faces(input) << " faces), tolerance " << tolerance << ": certified "
             << stats.certified_distance << ", crease " << stats.certified_crease_distance
             << ", CGAL: larger than the tolerance: " << (larger ? "yes" : "no") << ", mean q "
-            << PMP::mesh_quality_ilsa(input).mean_aspect_ratio << " -> " << PMP::mesh_quality_ilsa(result).mean_aspect_ratio
-            << std::endl;
+            << PMP::mesh_quality_ilsa(input).mean_aspect_ratio << " -> "
+            << PMP::mesh_quality_ilsa(result).mean_aspect_ratio << std::endl;
   ILSA_CHECK(!larger);
   ILSA_CHECK(stats.certified_distance <= tolerance);
   ILSA_CHECK(stats.certified_crease_distance <= tolerance);
@@ -127,8 +126,8 @@ Mesh smooth_and_judge(const Mesh& input, double tolerance, const std::string& na
 void test_meshes() {
   const double tolerance = ilsa::defaults::fidelity_tolerance;
   std::vector<std::string> files;
-  for (const char* name : {"sphere_low.off", "elephant.off", "hemisphere.off", "fandisk.off", "mech-holes-shark.off",
-                           "horse.ply"})
+  for (const char* name :
+       {"sphere_low.off", "elephant.off", "hemisphere.off", "fandisk.off", "mech-holes-shark.off", "horse.ply"})
     files.push_back(data_file(name));
   const std::string shared = ILSA_SHARED_DATA_DIR;
   for (const char* name : {"beetle.off", "camelhead.off", "cow.off", "abc4.stl"})
@@ -148,7 +147,8 @@ void test_meshes() {
   smooth_and_judge(polyhedron, tolerance, "fandisk (Polyhedron_3)");
 #ifdef CGAL_LINKED_WITH_TBB
   const Surface_mesh sequential = smooth_and_judge(elephant, 1e-4, "elephant");
-  const Surface_mesh parallel = smooth_and_judge<Surface_mesh, CGAL::Parallel_tag>(elephant, 1e-4, "elephant (parallel)");
+  const Surface_mesh parallel =
+      smooth_and_judge<Surface_mesh, CGAL::Parallel_tag>(elephant, 1e-4, "elephant (parallel)");
   ILSA_CHECK(points_of(sequential) == points_of(parallel));
 #endif
   // Without the bound, the judge finds the elephant beyond the tolerance.

@@ -96,8 +96,8 @@ std::size_t flipped_faces(const Surface_mesh& a, const Surface_mesh& b) {
     std::vector<Point> p;
     for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) p.push_back(m.point(v));
     normal = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
-    const double longest = (std::max)({CGAL::squared_distance(p[0], p[1]), CGAL::squared_distance(p[1], p[2]),
-                                       CGAL::squared_distance(p[2], p[0])});
+    const double longest = (std::max)(
+        {CGAL::squared_distance(p[0], p[1]), CGAL::squared_distance(p[1], p[2]), CGAL::squared_distance(p[2], p[0])});
     return std::sqrt(normal.squared_length()) <= 1e-6 * longest;
   };
   std::size_t flipped = 0;
@@ -673,13 +673,13 @@ int main() {
                 << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa << ", angle " << angle << ", fix " << fix
                 << ", floor " << (default_floor ? -1. : floor) << ", monotone " << monotone << ", reject worsening "
                 << reject_worsening << ", kink " << kink << ", crease contrast " << contrast << ", open crease edges "
-                << open_edges << ", tolerance " << tolerance << ", gain " << gain
-                << ", remaining gain " << remaining_gain << ", retry distance " << retry << ", project " << project
-                << ", safety " << safety << ", range " << use_range << ", vertex map " << use_vertex_map
-                << ", edge map " << use_edge_map << ", relax " << relax << "): flipped " << f.number_of_flipped_faces
-                << ", collapsed edges " << collapsed_edges << ", zero-area input faces opened reversed " << reversed
-                << ", distance " << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite "
-                << non_finite << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
+                << open_edges << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain "
+                << remaining_gain << ", retry distance " << retry << ", project " << project << ", safety " << safety
+                << ", range " << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map
+                << ", relax " << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges "
+                << collapsed_edges << ", zero-area input faces opened reversed " << reversed << ", distance "
+                << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
+                << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
                 << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
                 << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
                 << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "

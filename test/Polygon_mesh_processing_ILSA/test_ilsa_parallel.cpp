@@ -67,8 +67,7 @@ template <class Mesh> void test_meshes() {
   // A tight fidelity tolerance: most moves are shortened or dropped by the
   // certificates (user manual, "Fidelity Certificate"), whose faces are
   // checked in parallel and blamed in face order.
-  compare_perturbed<Mesh>("elephant.off", 14,
-                          CGAL::parameters::number_of_iterations(4).ilsa_fidelity_tolerance(1e-4),
+  compare_perturbed<Mesh>("elephant.off", 14, CGAL::parameters::number_of_iterations(4).ilsa_fidelity_tolerance(1e-4),
                           "elephant, fidelity tolerance 1e-4");
 }
 

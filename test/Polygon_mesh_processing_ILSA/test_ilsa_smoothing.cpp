@@ -880,8 +880,7 @@ template <class Mesh> void test_collapsed_faces_open_right_way() {
     const Package_setup<Mesh> setup(tm);
     const ilsa::Flat_mesh& m = setup.m;
     std::vector<double> scratch(m.number_of_faces());
-    ilsa::Move_safety safety(m, setup.c, setup.incidences, 0., std::numeric_limits<double>::infinity(),
-                             false, 3);
+    ilsa::Move_safety safety(m, setup.c, setup.incidences, 0., std::numeric_limits<double>::infinity(), false, 3);
     // Vertex (2, 1): at (1 + gap, 1) and next to (2, 0), unlike (1, 1). The
     // package's coordinates are centred and divided by the diagonal.
     auto flat = [&](double x, double y) { return ilsa::Vec3((ilsa::Vec3(x, y, 0.) - m.center) / m.scale); };

@@ -72,7 +72,8 @@ public:
       });
     failed_.assign(checked_.size(), 0);
     parallel_for<ConcurrencyTag>(checked_.size(), [&](std::size_t i) {
-      failed_[i] = !(output_distance(pos, checked_[i], limit_) <= limit_) || !(input_distance(pos, checked_[i], limit_) <= limit_);
+      failed_[i] = !(output_distance(pos, checked_[i], limit_) <= limit_) ||
+                   !(input_distance(pos, checked_[i], limit_) <= limit_);
     });
     // A failed edge shortens the moves of its ends first; only when neither
     // can be shortened, those of the other vertices it depends on.
@@ -83,7 +84,8 @@ public:
       for (std::size_t w : ends) blamed = blame(w) || blamed;
       if (blamed) continue;
       for (std::size_t w : ends)
-        for_each_line_edge(w, line_of(checked_[i]), [&](std::size_t e) { blame(m_.edges[e][0]), blame(m_.edges[e][1]); });
+        for_each_line_edge(w, line_of(checked_[i]),
+                           [&](std::size_t e) { blame(m_.edges[e][0]), blame(m_.edges[e][1]); });
     }
   }
 
@@ -124,8 +126,8 @@ private:
     std::array<Index, capacity> edge;
     std::size_t n = 0;
     void add(std::size_t e) {
-      if (n < capacity && std::find(edge.begin(), edge.begin() + std::ptrdiff_t(n), Index(e)) ==
-                              edge.begin() + std::ptrdiff_t(n))
+      if (n < capacity &&
+          std::find(edge.begin(), edge.begin() + std::ptrdiff_t(n), Index(e)) == edge.begin() + std::ptrdiff_t(n))
         edge[n++] = Index(e);
     }
   };
@@ -160,8 +162,9 @@ private:
       return std::array<Vec3, 2>{at[ends[0]], at[ends[1]]};
     };
     const double b = segment_bound(p, q, candidates.n, candidate, limit);
-    return b <= limit || !(loose < std::numeric_limits<double>::infinity()) ? b
-                                                                               : segment_bound(p, q, candidates.n, candidate, loose);
+    return b <= limit || !(loose < std::numeric_limits<double>::infinity())
+               ? b
+               : segment_bound(p, q, candidates.n, candidate, loose);
   }
 
   const Flat_mesh& m_;

@@ -52,7 +52,7 @@ inline constexpr double quality_floor = 0.5;
 inline constexpr bool quality_monotone = false;
 inline constexpr bool reject_worsening_moves = true;
 inline constexpr double fidelity_tolerance = 5e-4; // of the bounding-box diagonal
-inline constexpr double retry_distance = 0.03;      // of the mean edge length
+inline constexpr double retry_distance = 0.03;     // of the mean edge length
 
 // Quality summary: the aspect ratio under which a face counts as poor.
 inline constexpr double quality_threshold = 0.3;

@@ -181,8 +181,8 @@ inline bool is_thin(double double_area, double longest_squared) {
 /// `candidate(0) .. candidate(n - 1)` (each a `std::array<Vec3, 2>`), or
 /// infinity when no bound of at most `limit` is found. The segment is cut at
 /// the ends of the candidates' footprints on its line.
-template <class Candidate> double segment_bound(const Vec3& p, const Vec3& q, std::size_t n, const Candidate& candidate,
-                                                double limit) {
+template <class Candidate>
+double segment_bound(const Vec3& p, const Vec3& q, std::size_t n, const Candidate& candidate, double limit) {
   const double limit2 = limit * limit, inf = std::numeric_limits<double>::infinity();
   const Vec3 pq = q - p;
   const double l2 = pq.squaredNorm();

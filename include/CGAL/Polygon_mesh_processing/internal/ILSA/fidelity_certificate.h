@@ -137,9 +137,8 @@ public:
       const std::size_t near = candidates.n;
       if (input_.accepted_wide[t]) candidates.add_second_ring(m_, t);
       double drift = 0;
-      for_each_dependency(candidates, [&](std::size_t w) {
-        drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm());
-      });
+      for_each_dependency(candidates,
+                          [&](std::size_t w) { drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm()); });
       input_.failed[i] = !input_.certify(t, std::sqrt(drift), limit_, [&](bool& wide) {
         // The first ring, and if that fails the second ring too (smoothed
         // vertices slide on the input, along a crease sometimes farther than
@@ -199,9 +198,9 @@ public:
 private:
   // The bounds of one direction, per face.
   struct Side {
-    std::vector<float> accepted;     // a bound at the accepted positions (rounded up)
-    std::vector<float> trial;        // a bound at the positions of the face's last check, if it passed
-    std::vector<std::uint32_t> stamp; // the last check that listed the face
+    std::vector<float> accepted;        // a bound at the accepted positions (rounded up)
+    std::vector<float> trial;           // a bound at the positions of the face's last check, if it passed
+    std::vector<std::uint32_t> stamp;   // the last check that listed the face
     std::vector<unsigned char> in_call; // listed since the last accept()
     std::vector<Index> checked, called; // the faces of the current check; those listed since the last accept()
     std::vector<unsigned char> failed;  // per face of `checked`

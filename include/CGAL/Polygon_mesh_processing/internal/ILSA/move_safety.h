@@ -413,9 +413,7 @@ private:
   // only an edge, whose check then finds what its last one found).
   template <class ConcurrencyTag>
   void after_shortening(const std::vector<Index>& offenders, std::vector<Index>& to_check) {
-    parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) {
-      changed_round_.set(offenders[i], round_);
-    });
+    parallel_for<ConcurrencyTag>(offenders.size(), [&](std::size_t i) { changed_round_.set(offenders[i], round_); });
     to_check.clear();
     auto recheck = [&](std::size_t w) {
       if (is_moved_[w] && tries_[w] <= halvings_ && !checked_[w]) {

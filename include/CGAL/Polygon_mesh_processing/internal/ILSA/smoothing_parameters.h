@@ -51,13 +51,10 @@ inline void check_smoothing_parameters(const Smoothing_parameters& p, double ite
           p.retry_distance);
   require(iterations >= 0 && iterations <= 100000, "number_of_iterations must be in [0, 100000]", iterations);
   require(sweeps >= 1 && sweeps <= 10000, "number_of_relaxation_steps must be in [1, 10000]", sweeps);
-  require(penalty_sweeps >= 1 && penalty_sweeps <= 10000, "ilsa_penalty_steps must be in [1, 10000]",
-          penalty_sweeps);
+  require(penalty_sweeps >= 1 && penalty_sweeps <= 10000, "ilsa_penalty_steps must be in [1, 10000]", penalty_sweeps);
   require(p.relax1 > 0 && p.relax1 <= 1, "ilsa_relaxation must be in (0, 1]", p.relax1);
-  require(p.penalty.relax2 > 0 && p.penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]",
-          p.penalty.relax2);
-  require(p.penalty.mu > 0 && std::isfinite(p.penalty.mu), "ilsa_penalty_mu must be positive and finite",
-          p.penalty.mu);
+  require(p.penalty.relax2 > 0 && p.penalty.relax2 <= 1, "ilsa_penalty_relaxation must be in (0, 1]", p.penalty.relax2);
+  require(p.penalty.mu > 0 && std::isfinite(p.penalty.mu), "ilsa_penalty_mu must be positive and finite", p.penalty.mu);
   require(p.penalty.length_weight >= 0 && std::isfinite(p.penalty.length_weight),
           "ilsa_length_weight must be non-negative and finite", p.penalty.length_weight);
   require(p.penalty.area_weight >= 0 && std::isfinite(p.penalty.area_weight),
