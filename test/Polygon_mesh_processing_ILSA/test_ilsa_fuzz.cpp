@@ -103,7 +103,8 @@ std::size_t flipped_faces(const Surface_mesh& a, const Surface_mesh& b) {
   std::size_t flipped = 0;
   for (auto fa = faces(a).begin(), fb = faces(b).begin(); fa != faces(a).end(); ++fa, ++fb) {
     K::Vector_3 na, nb;
-    const bool both = collapsed(a, *fa, na) & collapsed(b, *fb, nb);
+    const bool collapsed_a = collapsed(a, *fa, na), collapsed_b = collapsed(b, *fb, nb);
+    const bool both = collapsed_a && collapsed_b;
     if (na * nb < 0 && !both) ++flipped;
   }
   return flipped;
