@@ -4,7 +4,7 @@
 # tangential_relaxation(), same compiler and flags, taking turns, median of N.
 # The package's program is compiled twice: header-only (the default), and with
 # CGAL_ILSA_COMPILED_CORE, where the core is compiled once for the whole
-# project, from src/ilsa_core.cpp (user manual, "Compiling the core once"),
+# project, from src/ilsa_core.cpp (user manual, "Compiling the Core Once"),
 # which is timed too.
 #
 #   benchmark/compile_time.sh [N] [extra compiler flags...]

@@ -7,6 +7,7 @@
 //   ilsa_benchmark --pareto [--peer-iterations N] [MESH ...]
 //   ilsa_benchmark --phases [--runs N] [--peer-iterations N] [MESH ...]
 //   ilsa_benchmark --crease-sets [MESH ...]
+//   ilsa_benchmark --decisions [MESH ...]
 //
 // Without meshes: every bundled mesh, plus ../shared/data when it exists.
 // Prints one Markdown table row per (mesh, method): quality (aspect ratio q
@@ -24,7 +25,7 @@
 // (the horse Loop-subdivided N times and perturbed), e.g. to profile ILSA on it
 // with ilsa_smooth.
 // --pareto prints instead the comparison at the same distance (user manual,
-// "What Limits the Smoothing"): CGAL tangential relaxation (unconstrained,
+// "Safety Check"): CGAL tangential relaxation (unconstrained,
 // N iterations) and its Hausdorff distance H to the input; then ILSA with its
 // defaults but the fidelity tolerance set to H, and the same with the paper's
 // classification (no crease contrast, no open-crease rule, candidates without
@@ -36,6 +37,13 @@
 // default fidelity tolerance. One run each (no time measured).
 // --crease-sets prints instead the connected sets of feature edges of each
 // mesh and what the open-crease rule drops (see run_crease_sets()).
+// --decisions prints instead what each decision that differs from the paper
+// brings (user manual, "Decisions That Differ from the Paper"): ILSA with its
+// defaults, then with one decision at a time reverted to the paper's choice
+// (or without one of the package's rules), then the paper's variant; mean and
+// minimum q, the distance ILSA certified, the largest crease deviation
+// (mesh_fidelity_ilsa(), sampled), the fixed vertices, the iterations run and
+// the time, one thread, one run each.
 // --phases prints instead where ILSA's time goes, one thread, median of N
 // runs: the time to the end of the first iteration (the callback's first
 // call), the median time between two later calls (one iteration with its
@@ -63,6 +71,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <random>
 #include <iostream>
@@ -286,13 +295,12 @@ void run_pareto(const std::vector<std::string>& files, unsigned peer_iterations)
     // candidates sharp (no crease contrast, no open-crease rule), candidates
     // without a sharp edge fixed.
     auto ilsa = [&](bool paper) {
-      namespace defaults = PMP::internal::ILSA::defaults;
+      namespace ilsa = PMP::internal::ILSA;
       Mesh m = input;
-      PMP::smooth_surface_mesh_ilsa<CGAL::Parallel_if_available_tag>(
-          m, CGAL::parameters::ilsa_fidelity_tolerance(p.h)
-                 .ilsa_crease_contrast(paper ? 0. : defaults::crease_contrast)
-                 .ilsa_minimum_open_crease_edges(paper ? 0u : defaults::minimum_open_crease_edges)
-                 .ilsa_fix_unattached_candidates(paper || defaults::fix_unattached_candidates));
+      ilsa::Classification_options rules = ilsa::Classification_options::rules(feature_angle, false);
+      if (paper) rules.crease_contrast = 0, rules.minimum_open_crease_edges = 0, rules.fix_unattached_candidates = true;
+      ilsa::smooth<CGAL::Parallel_if_available_tag>(vertices(m), m, CGAL::parameters::ilsa_fidelity_tolerance(p.h),
+                                                    nullptr, &rules);
       return measure(m);
     };
     const Result a = ilsa(false), b = ilsa(true);
@@ -369,8 +377,12 @@ void run_crease_sets(const std::vector<std::string>& files) {
     Mesh input;
     if (!read_input(file, input)) continue;
     ilsa::Set_up_incidences incidences;
-    const auto np = CGAL::parameters::ilsa_minimum_open_crease_edges(0).ilsa_fix_unattached_candidates(true);
-    const auto flat = ilsa::classified_flat_copy(input, get(CGAL::vertex_point, input), np, incidences);
+    // The package's rules, candidates without sharp edge fixed, without and with the open-crease rule.
+    ilsa::Classification_options off = ilsa::Classification_options::rules(feature_angle, false), on = off;
+    off.fix_unattached_candidates = on.fix_unattached_candidates = true;
+    off.minimum_open_crease_edges = 0;
+    const auto flat = ilsa::classified_flat_copy(input, get(CGAL::vertex_point, input),
+                                                 CGAL::parameters::default_values(), incidences, &off);
     const ilsa::Flat_mesh& m = flat.mesh;
     const std::vector<unsigned char>& feature = flat.classification.feature_edge;
     // The sets as the rule forms them (drop_short_open_lines()).
@@ -390,17 +402,96 @@ void run_crease_sets(const std::vector<std::string>& files) {
     std::sort(sizes.rbegin(), sizes.rend());
     std::string largest;
     for (std::size_t i = 0; i < sizes.size() && i < 5; ++i) largest += (i ? ", " : "") + std::to_string(sizes[i]);
-    PMP::ILSA_statistics off; // the classification made above, the rule off
-    ilsa::count_types(flat.classification, off);
-    std::map<Mesh::Vertex_index, PMP::ILSA_vertex_type> types;
-    const auto on =
-        PMP::classify_vertices_ilsa(input, boost::make_assoc_property_map(types),
-                                    CGAL::parameters::ilsa_fix_unattached_candidates(true)); // the rule's default
+    PMP::ILSA_statistics off_types; // the classification made above, the rule off
+    ilsa::count_types(flat.classification, off_types);
+    ilsa::Set_up_incidences on_incidences;
+    PMP::ILSA_statistics with_rule;
+    ilsa::count_types(ilsa::classified_flat_copy(input, get(CGAL::vertex_point, input),
+                                                 CGAL::parameters::default_values(), on_incidences, &on)
+                          .classification,
+                      with_rule);
     std::printf("| %s | %zu | %zu | %s | %zu | %zu (%zu) | %zu / %zu | %zu / %zu |\n",
                 std::filesystem::path(file).filename().string().c_str(), features, sizes.size(),
-                largest.empty() ? "-" : largest.c_str(), open, dropped, dropped_edges, off.number_of_ridge_vertices,
-                off.number_of_corner_vertices, on.number_of_ridge_vertices, on.number_of_corner_vertices);
+                largest.empty() ? "-" : largest.c_str(), open, dropped, dropped_edges,
+                off_types.number_of_ridge_vertices, off_types.number_of_corner_vertices,
+                with_rule.number_of_ridge_vertices, with_rule.number_of_corner_vertices);
     std::fflush(stdout);
+  }
+}
+
+// The --decisions table (see the top of the file).
+void run_decisions(const std::vector<std::string>& files) {
+  namespace ilsa = PMP::internal::ILSA;
+  using Change = std::function<void(ilsa::Smoothing_parameters&, ilsa::Classification_options&)>;
+  const std::vector<std::pair<std::string, Change>> variants = {
+      {"defaults", [](auto&, auto&) {}},
+      {"displacement with its normal component", [](auto& p, auto&) { p.penalty.tangential = false; }},
+      {"2 penalty sweeps", [](auto& p, auto&) { p.penalty.sweeps = p.sweeps; }},
+      {"worsening moves accepted", [](auto& p, auto&) { p.reject_worsening = false; }},
+      {"dropped moves retried at once", [](auto& p, auto&) { p.retry_distance = 0; }},
+      {"no remaining-gain stop", [](auto& p, auto&) { p.minimum_remaining_gain = 0; }},
+      {"no crease contrast", [](auto&, auto& r) { r.crease_contrast = 0; }},
+      {"no open-crease rule", [](auto&, auto& r) { r.minimum_open_crease_edges = 0; }},
+      {"candidates without sharp edge fixed", [](auto&, auto& r) { r.fix_unattached_candidates = true; }},
+      {"no crease kinks", [](auto&, auto& r) { r.kink_angle_degrees = 180; }},
+      {"no fidelity bound", [](auto& p, auto&) { p.fidelity_tolerance = std::numeric_limits<double>::infinity(); }},
+      {"no quality floor", [](auto& p, auto&) { p.quality_floor = 0, p.raise_floor_to_input_minimum = false; }},
+      {"the paper's variant", [](auto&, auto&) {}},
+  };
+  std::cout << "| mesh | variant | mean q | min q | certified distance | crease deviation | fixed vertices | "
+               "iterations | time s |\n|---|---|---|---|---|---|---|---|---|\n";
+  std::vector<std::string> names;                           // of the meshes read
+  std::vector<std::vector<double>> mean_q(variants.size()); // per variant, per mesh
+  for (const std::string& file : files) {
+    Mesh input;
+    if (!read_input(file, input)) continue;
+    names.push_back(std::filesystem::path(file).stem().string());
+    std::size_t variant = 0;
+    for (const auto& [name, change] : variants) {
+      const bool paper = name == "the paper's variant";
+      const auto np = CGAL::parameters::ilsa_paper_variant(paper);
+      ilsa::Smoothing_parameters p = ilsa::read_smoothing_parameters(np);
+      ilsa::Classification_options r = ilsa::read_classification_options(np);
+      change(p, r);
+      Mesh m = input;
+      const auto start = std::chrono::steady_clock::now();
+      const auto s = ilsa::smooth<CGAL::Sequential_tag>(vertices(m), m, np, &p, &r);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      // The crease deviation along the feature lines of this variant's classification.
+      PMP::ILSA_fidelity_summary f;
+      {
+        ilsa::Set_up_incidences incidences;
+        const auto flat = ilsa::classified_flat_copy(input, get(CGAL::vertex_point, input), np, incidences, &r);
+        std::map<Mesh::Edge_index, bool> lines;
+        for (std::size_t e = 0; e < flat.mesh.edges.size(); ++e)
+          if (flat.classification.feature_edge[e]) {
+            const auto h = halfedge(flat.vertices[flat.mesh.edges[e][0]], flat.vertices[flat.mesh.edges[e][1]], input);
+            lines[edge(h.first, input)] = true;
+          }
+        f = PMP::mesh_fidelity_ilsa(input, m,
+                                    CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(lines))
+                                        .ilsa_compute_hausdorff_distance(false));
+      }
+      const auto q = PMP::mesh_quality_ilsa(m);
+      mean_q[variant++].push_back(q.mean_aspect_ratio);
+      std::printf("| %s | %s | %.4f | %.4f | %.2e | %.2e | %zu | %zu | %.3f |\n",
+                  std::filesystem::path(file).filename().string().c_str(), name.c_str(), q.mean_aspect_ratio,
+                  q.min_aspect_ratio, s.certified_distance, f.max_crease_deviation,
+                  s.number_of_corner_vertices + s.number_of_boundary_vertices, s.number_of_iterations, seconds);
+      std::fflush(stdout);
+    }
+  }
+  // The mean q again, a row per variant: the defaults', then each variant's change.
+  std::cout << "\n| variant |";
+  for (const std::string& name : names) std::cout << " " << name << " |";
+  std::cout << "\n|---|";
+  for (std::size_t i = 0; i < names.size(); ++i) std::cout << "---|";
+  std::cout << "\n";
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    std::cout << "| " << variants[v].first << " |";
+    for (std::size_t i = 0; i < names.size(); ++i)
+      std::printf(v == 0 ? " %.4f |" : " %+.4f |", v == 0 ? mean_q[0][i] : mean_q[v][i] - mean_q[0][i]);
+    std::cout << "\n";
   }
 }
 
@@ -411,7 +502,7 @@ int main(int argc, char** argv) {
   int scaling = -1;     // --scaling N: the scaling table up to N subdivisions, and nothing else
   int write_level = -1; // --write-scaling-mesh N FILE
   std::string write_file;
-  bool pareto = false, phases = false, crease_sets = false;
+  bool pareto = false, phases = false, crease_sets = false, decisions = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -428,6 +519,8 @@ int main(int argc, char** argv) {
       phases = true;
     else if (a == "--crease-sets")
       crease_sets = true;
+    else if (a == "--decisions")
+      decisions = true;
     else if (a == "--peer-iterations" && i + 1 < argc)
       peer_iterations = unsigned(std::max(1, std::atoi(argv[++i])));
     else
@@ -452,6 +545,10 @@ int main(int argc, char** argv) {
   }
   if (crease_sets) {
     run_crease_sets(files);
+    return 0;
+  }
+  if (decisions) {
+    run_decisions(files);
     return 0;
   }
 

@@ -35,8 +35,7 @@ function(ilsa_set_usage_requirements target include_dir)
 endfunction()
 
 # ilsa_add_core_library(<target> <source> <package target>): the package's
-# core compiled once, from src/ilsa_core.cpp (user manual, "Compiling the core
-# once"), with the flags of the project that builds it. A program that links
+# core compiled once, from src/ilsa_core.cpp (user manual, "Compiling the Core Once"), with the flags of the project that builds it. A program that links
 # <target> defines CGAL_ILSA_COMPILED_CORE and so compiles only the part of the
 # package that depends on its mesh type. Built only when a target links it.
 function(ilsa_add_core_library target source package_target)

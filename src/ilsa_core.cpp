@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The core of ILSA compiled once (user manual, "Compiling the core once"):
+// The core of ILSA compiled once (user manual, "Compiling the Core Once"):
 // the classification and the iterations on the flat copy, which do not depend
 // on the user's mesh type. Programs that define CGAL_ILSA_COMPILED_CORE
 // include only their declarations (internal/ILSA/core.h) and link this file's
@@ -22,11 +22,11 @@ namespace ILSA {
 template std::vector<Vec3> smooth_flat_copy<CGAL::Sequential_tag>(const Flat_mesh&, const Vertex_classification&,
                                                                   const ILSA_neighborhoods&,
                                                                   const Smoothing_parameters&, Set_up_incidences&,
-                                                                  double, ILSA_statistics&);
+                                                                  ILSA_statistics&);
 #ifdef CGAL_LINKED_WITH_TBB
 template std::vector<Vec3> smooth_flat_copy<CGAL::Parallel_tag>(const Flat_mesh&, const Vertex_classification&,
                                                                 const ILSA_neighborhoods&, const Smoothing_parameters&,
-                                                                Set_up_incidences&, double, ILSA_statistics&);
+                                                                Set_up_incidences&, ILSA_statistics&);
 #endif
 
 } // namespace ILSA

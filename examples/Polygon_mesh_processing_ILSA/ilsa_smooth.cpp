@@ -12,6 +12,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/Color.h>
 #include <CGAL/Polygon_mesh_processing/classify_vertices_ilsa.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/mesh_quality_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_version.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
@@ -20,6 +21,8 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "ilsa_example_data.h"
+
+#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -32,6 +35,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -59,24 +63,15 @@ struct Options {
   std::string input = ilsa_data_file("horse.ply");
   std::string output;
   // The library's defaults (the usage text below states them; test_ilsa_smoothing checks that it does).
-  unsigned int iterations = defaults::number_of_iterations, relaxation_steps = defaults::number_of_relaxation_steps;
-  unsigned int penalty_steps = defaults::penalty_steps;
-  bool penalty_gauss_seidel = defaults::penalty_gauss_seidel;
-  bool tangential = defaults::tangential_displacement;
-  bool tangential_sweeps = defaults::tangential_sweeps;
-  double relax1 = defaults::relaxation, relax2 = defaults::penalty_relaxation, mu = defaults::penalty_mu;
-  double wl = defaults::length_weight, wa = defaults::area_weight, feature_angle = defaults::feature_angle;
-  double fidelity_tolerance = defaults::fidelity_tolerance;
+  unsigned int iterations = defaults::number_of_iterations;
   double minimum_gain = defaults::minimum_quality_gain;
-  double minimum_remaining_gain = defaults::minimum_remaining_gain;
-  double retry_distance = defaults::retry_distance;
-  double crease_contrast = defaults::crease_contrast;
-  unsigned int minimum_open_crease_edges = defaults::minimum_open_crease_edges;
-  std::optional<double> kink_angle;    // the library's default (the feature angle) when not given
   std::optional<double> quality_floor; // the library's default when not given
-  bool fix_unattached = defaults::fix_unattached_candidates, project = defaults::do_project;
-  bool safety = defaults::use_safety_constraints, monotone = defaults::quality_monotone;
-  bool reject_worsening = defaults::reject_worsening_moves, verbose = false;
+  double fidelity_tolerance = defaults::fidelity_tolerance;
+  bool paper = defaults::paper_variant, project = defaults::do_project, safety = defaults::use_safety_constraints;
+  double feature_angle = defaults::feature_angle;
+  std::string sharp_edges_file;                                             // --sharp-edges
+  std::optional<double> detect_sharp_edges;                                 // --detect-sharp-edges
+  std::optional<std::vector<unsigned char>> crease_edges;                   // per edge, from one of the two above
   unsigned int worst = 0;                                                   // faces listed by --worst
   unsigned int threads = std::max(1u, std::thread::hardware_concurrency()); // 1: sequential
   bool triangulate = false, color_by_quality = false, color_by_type = false;
@@ -93,66 +88,49 @@ const char* usage =
     "Formats (by extension): .off .obj .ply .stl .ts (GOCAD) and .vtp (when CGAL has VTK), in and out.\n"
     "OUTPUT keeps the vertex and face order, with 17 significant digits (.ply: binary doubles);\n"
     ".stl holds 32-bit floats only (about 7 digits): the format's limit.\n"
+    "\n"
+    "Input and output:\n"
     "  --help, -h              this text\n"
     "  --version               the package's version\n"
-    "  --iterations N          largest number of global iterations (default 8)\n"
-    "  --min-gain X            stop once an iteration raises the mean q by less, >= 0,\n"
-    "                          0 disables this stop (default 1e-4)\n"
-    "  --min-remaining-gain X  stop once an iteration's gain of mean q times the iterations\n"
-    "                          left is below X, >= 0, 0 disables this stop (default 2e-3);\n"
-    "                          with both stops disabled every iteration runs\n"
-    "  --relaxation-steps N    sweeps of the ILSA step per iteration (default 2)\n"
-    "  --penalty-steps N       sweeps of the penalty step per iteration (default 8)\n"
-    "  --gauss-seidel 0|1      1: multicolour Gauss-Seidel sweeps of the penalty step,\n"
-    "                          0: Jacobi sweeps (the paper) (default 0)\n"
-    "  --relax1 X              ILSA relaxation, (0,1] (default 0.5)\n"
-    "  --relax2 X              penalty relaxation, (0,1] (default 0.8)\n"
-    "  --tangential 0|1        drop the normal component of the displacements,\n"
-    "                          0: keep it (the paper) (default 1)\n"
-    "  --tangential-sweeps 0|1 1: every penalty sweep drops the normal component,\n"
-    "                          0: dropped once after the sweeps (default 1)\n"
-    "  --mu X                  penalty parameter, > 0 (default 1)\n"
-    "  --wl X                  length weight, >= 0 (default 1)\n"
-    "  --wa X                  area weight, >= 0 (default 0.1)\n"
-    "  --feature-angle DEG     an edge is sharp when its face normals differ by more, [0,180) (default 20)\n"
-    "  --fix-unattached 0|1    fix ridge candidates without sharp edge, 1: the paper (default 0)\n"
-    "  --crease-contrast X     a sharp edge must bend X times more than the flatter other edge\n"
-    "                          of each of its faces, >= 0, 0: every one (the paper) (default 5)\n"
-    "  --min-open-crease-edges N\n"
-    "                          connected sharp edges with an end and fewer edges are curvature,\n"
-    "                          not a crease line, 0: none (the paper) (default 20)\n"
-    "  --kink-angle DEG        fix a crease vertex where the crease turns by more, [0,180],\n"
-    "                          180 disables (default: the feature angle)\n"
-    "  --no-project            do not project back onto the input surface\n"
-    "  --no-safety             no inversion check after projection\n"
-    "  --quality-floor X       safety check: no triangle pushed below this q, [0,1)\n"
-    "                          (default: 0.5, or the input's minimum q if higher)\n"
-    "  --quality-monotone      reject moves that lower the star's minimum quality\n"
-    "  --reject-worsening 0|1  safety check: drop moves that lower the star's mean quality (default 1)\n"
-    "  --fidelity-tolerance X  largest distance between the result and the input surface, both ways,\n"
-    "                          certified (and along the feature lines), relative to the bounding-box\n"
-    "                          diagonal, > 0, inf disables (default 5e-4)\n"
-    "  --retry-distance X      a move the safety check dropped (but for the quality floor in a star\n"
-    "                          at or above it) is tried again once the neighbours have moved this\n"
-    "                          far in all, relative to the mean edge length, >= 0, 0: in the next\n"
-    "                          iteration (default 0.03)\n"
-    "  --threads N             threads (default: all cores; 1: sequential; the result is the same)\n"
     "  --triangulate           split non-triangle faces first (CGAL triangulate_faces);\n"
     "                          without it a non-triangle face is an error\n"
     "  --color-by-quality      OUTPUT (.ply) gets face colours by aspect ratio q:\n"
     "                          red 0, orange 0.25, yellow 0.5, light green 0.75, green 1\n"
     "  --color-by-type         OUTPUT (.ply) gets vertex colours by ILSA vertex type:\n"
     "                          smooth grey, ridge blue, corner red, boundary green\n"
+    "\n"
+    "Quality and fidelity:\n"
+    "  --iterations N          largest number of global iterations (default 8)\n"
+    "  --min-gain X            stop once an iteration raises the mean q by less, >= 0,\n"
+    "                          0: every iteration runs (default 1e-4)\n"
+    "  --quality-floor X       no triangle pushed below this q, [0,1)\n"
+    "                          (default: 0.5, or the input's minimum q if higher)\n"
+    "  --fidelity-tolerance X  largest distance between the result and the input surface, both ways,\n"
+    "                          certified for every point (and between the feature lines), relative\n"
+    "                          to the bounding-box diagonal, > 0, inf disables (default 5e-4)\n"
+    "  --paper                 the paper's variant: its classification and displacement\n"
+    "  --no-safety             no safety check: no flip test, quality floor or fidelity bound\n"
+    "  --no-project            do not project back onto the input surface\n"
+    "\n"
+    "Creases:\n"
+    "  --feature-angle DEG     an edge is sharp when its face normals differ by more, [0,180) (default 20)\n"
+    "  --sharp-edges FILE      keep these crease edges instead of detecting them: one edge a line,\n"
+    "                          two vertex indices of INPUT (from 0); '#' starts a comment\n"
+    "  --detect-sharp-edges DEG\n"
+    "                          keep the crease edges of CGAL's detect_sharp_edges() at this angle\n"
+    "                          instead; with either, crease vertices slide along the given edges\n"
+    "\n"
+    "Report and threads:\n"
     "  --report auto|summary|full\n"
     "                          fidelity report: full adds CGAL's bounded-error Hausdorff distance\n"
     "                          (certified to 1e-5, costly on large meshes: 17 s on the horse);\n"
     "                          auto: full up to 20000 faces (default auto)\n"
     "  --progress, --no-progress\n"
     "                          a progress line per iteration on stderr (default: on a terminal)\n"
-    "  --verbose               print the set-up's time and what each iteration does (and its time)\n"
     "  --worst N               list the N worst faces after smoothing: aspect ratio before and after,\n"
     "                          type of each vertex and whether it moved, smallest dihedral angle of\n"
-    "                          the face's edges in the input\n";
+    "                          the face's edges in the input\n"
+    "  --threads N             threads (default: all cores; 1: sequential; the result is the same)\n";
 
 double parse_number(const std::string& flag, const std::string& text) {
   std::size_t used = 0;
@@ -178,32 +156,18 @@ Options parse(int argc, char** argv) {
   std::vector<std::string> positional;
   std::map<std::string, std::function<void(const std::string&)>> valued{
       {"--iterations", [&](const std::string& s) { o.iterations = parse_count("--iterations", s); }},
-      {"--relaxation-steps", [&](const std::string& s) { o.relaxation_steps = parse_count("--relaxation-steps", s); }},
-      {"--penalty-steps", [&](const std::string& s) { o.penalty_steps = parse_count("--penalty-steps", s); }},
-      {"--gauss-seidel", [&](const std::string& s) { o.penalty_gauss_seidel = parse_count("--gauss-seidel", s) != 0; }},
-      {"--tangential", [&](const std::string& s) { o.tangential = parse_count("--tangential", s) != 0; }},
-      {"--tangential-sweeps",
-       [&](const std::string& s) { o.tangential_sweeps = parse_count("--tangential-sweeps", s) != 0; }},
-      {"--relax1", [&](const std::string& s) { o.relax1 = parse_number("--relax1", s); }},
-      {"--relax2", [&](const std::string& s) { o.relax2 = parse_number("--relax2", s); }},
-      {"--mu", [&](const std::string& s) { o.mu = parse_number("--mu", s); }},
-      {"--wl", [&](const std::string& s) { o.wl = parse_number("--wl", s); }},
-      {"--wa", [&](const std::string& s) { o.wa = parse_number("--wa", s); }},
-      {"--feature-angle", [&](const std::string& s) { o.feature_angle = parse_number("--feature-angle", s); }},
       {"--min-gain", [&](const std::string& s) { o.minimum_gain = parse_number("--min-gain", s); }},
-      {"--min-remaining-gain",
-       [&](const std::string& s) { o.minimum_remaining_gain = parse_number("--min-remaining-gain", s); }},
-      {"--retry-distance", [&](const std::string& s) { o.retry_distance = parse_number("--retry-distance", s); }},
-      {"--kink-angle", [&](const std::string& s) { o.kink_angle = parse_number("--kink-angle", s); }},
-      {"--crease-contrast", [&](const std::string& s) { o.crease_contrast = parse_number("--crease-contrast", s); }},
-      {"--min-open-crease-edges",
-       [&](const std::string& s) { o.minimum_open_crease_edges = parse_count("--min-open-crease-edges", s); }},
       {"--quality-floor", [&](const std::string& s) { o.quality_floor = parse_number("--quality-floor", s); }},
       {"--fidelity-tolerance",
        [&](const std::string& s) { o.fidelity_tolerance = parse_number("--fidelity-tolerance", s); }},
-      {"--fix-unattached", [&](const std::string& s) { o.fix_unattached = parse_count("--fix-unattached", s) != 0; }},
-      {"--reject-worsening",
-       [&](const std::string& s) { o.reject_worsening = parse_count("--reject-worsening", s) != 0; }},
+      {"--feature-angle", [&](const std::string& s) { o.feature_angle = parse_number("--feature-angle", s); }},
+      {"--sharp-edges", [&](const std::string& s) { o.sharp_edges_file = s; }},
+      {"--detect-sharp-edges",
+       [&](const std::string& s) {
+         o.detect_sharp_edges = parse_number("--detect-sharp-edges", s);
+         if (!(*o.detect_sharp_edges >= 0 && *o.detect_sharp_edges <= 180))
+           throw std::invalid_argument("--detect-sharp-edges expects an angle in [0, 180], got '" + s + "'");
+       }},
       {"--worst", [&](const std::string& s) { o.worst = parse_count("--worst", s); }},
       {"--threads",
        [&](const std::string& s) {
@@ -217,10 +181,9 @@ Options parse(int argc, char** argv) {
     o.report = s;
   };
   std::map<std::string, std::function<void()>> switches{
+      {"--paper", [&] { o.paper = true; }},
       {"--no-project", [&] { o.project = false; }},
       {"--no-safety", [&] { o.safety = false; }},
-      {"--quality-monotone", [&] { o.monotone = true; }},
-      {"--verbose", [&] { o.verbose = true; }},
       {"--triangulate", [&] { o.triangulate = true; }},
       {"--color-by-quality", [&] { o.color_by_quality = true; }},
       {"--color-by-type", [&] { o.color_by_type = true; }},
@@ -262,28 +225,16 @@ Options parse(int argc, char** argv) {
                                  std::pair<const char*, bool>{"--color-by-type", o.color_by_type}})
     if (on && (o.output.size() < 4 || o.output.substr(o.output.size() - 4) != ".ply"))
       throw std::invalid_argument(std::string(flag) + " writes colours to a PLY file: give an OUTPUT ending in .ply");
+  if (!o.sharp_edges_file.empty() && o.detect_sharp_edges)
+    throw std::invalid_argument("--sharp-edges and --detect-sharp-edges both give the crease edges: choose one");
   return o;
 }
 
 // The library's messages name its parameters; the tool's name the flags.
 std::string in_flag_terms(std::string message) {
   static const std::pair<const char*, const char*> names[] = {
-      {"ilsa_penalty_relaxation", "--relax2"},
-      {"ilsa_relaxation", "--relax1"},
-      {"ilsa_penalty_mu", "--mu"},
-      {"ilsa_length_weight", "--wl"},
-      {"ilsa_area_weight", "--wa"},
-      {"ilsa_feature_angle", "--feature-angle"},
-      {"ilsa_crease_kink_angle", "--kink-angle"},
-      {"ilsa_crease_contrast", "--crease-contrast"},
-      {"ilsa_minimum_open_crease_edges", "--min-open-crease-edges"},
-      {"ilsa_minimum_quality_gain", "--min-gain"},
-      {"ilsa_minimum_remaining_gain", "--min-remaining-gain"},
-      {"ilsa_retry_distance", "--retry-distance"},
-      {"ilsa_quality_floor", "--quality-floor"},
-      {"ilsa_fidelity_tolerance", "--fidelity-tolerance"},
-      {"number_of_relaxation_steps", "--relaxation-steps"},
-      {"ilsa_penalty_steps", "--penalty-steps"},
+      {"ilsa_feature_angle", "--feature-angle"}, {"ilsa_minimum_quality_gain", "--min-gain"},
+      {"ilsa_quality_floor", "--quality-floor"}, {"ilsa_fidelity_tolerance", "--fidelity-tolerance"},
       {"number_of_iterations", "--iterations"},
   };
   for (const auto& [library, flag] : names)
@@ -308,17 +259,40 @@ void print_quality(const char* label, const PMP::ILSA_quality_summary& q) {
             << " %, min angle " << q.min_angle << " deg, degenerate faces " << q.number_of_degenerate_faces << "\n";
 }
 
+// The named parameters of the flags, handed to `f`: those of the crease
+// flags (feature angle, paper's variant, the user's crease edges that
+// vertices slide along), and those of the smoothing when `smoothing`.
+template <class F>
+auto with_parameters(const Options& o, const std::function<bool(double)>& callback, bool smoothing, const F& f) {
+  const auto creases = CGAL::parameters::ilsa_feature_angle(o.feature_angle).ilsa_paper_variant(o.paper);
+  auto more = [&](const auto& np) {
+    if (!smoothing) return f(np);
+    const auto all = np.number_of_iterations(o.iterations)
+                         .ilsa_minimum_quality_gain(o.minimum_gain)
+                         .ilsa_fidelity_tolerance(o.fidelity_tolerance)
+                         .do_project(o.project)
+                         .use_safety_constraints(o.safety)
+                         .callback(callback);
+    return o.quality_floor ? f(all.ilsa_quality_floor(*o.quality_floor)) : f(all);
+  };
+  if (!o.crease_edges) return more(creases);
+  const std::vector<unsigned char>* edges = &*o.crease_edges;
+  const auto map = boost::make_function_property_map<Mesh::Edge_index, bool>(
+      [edges](Mesh::Edge_index e) { return (*edges)[std::size_t(e)] != 0; });
+  return more(creases.edge_is_constrained_map(map).relax_constraints(true));
+}
+template <class F> auto with_crease_parameters(const Options& o, const F& f) {
+  return with_parameters(o, std::function<bool(double)>(), false, f);
+}
+
 // The `count` worst faces of `smoothed` (same connectivity as `original`), with
 // what holds each back: fixed vertices, vertices that did not move, folds of the
 // input (a small dihedral angle).
 void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int count, const Options& o) {
   std::map<Mesh::Vertex_index, PMP::ILSA_vertex_type> types;
-  PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
-                              CGAL::parameters::ilsa_feature_angle(o.feature_angle)
-                                  .ilsa_fix_unattached_candidates(o.fix_unattached)
-                                  .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
-                                  .ilsa_crease_contrast(o.crease_contrast)
-                                  .ilsa_minimum_open_crease_edges(o.minimum_open_crease_edges));
+  with_crease_parameters(o, [&](const auto& np) {
+    return PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types), np);
+  });
   auto aspect_ratio = [](const Mesh& m, Mesh::Face_index f) {
     const auto h = halfedge(f, m);
     return PMP::triangle_quality_ilsa(m.point(source(h, m)), m.point(target(h, m)), m.point(target(next(h, m), m)));
@@ -347,54 +321,59 @@ void print_worst_faces(const Mesh& original, const Mesh& smoothed, unsigned int 
   }
 }
 
-// The named parameters of the flags.
-auto smoothing_parameters(const Options& o, const std::function<bool(double)>& callback) {
-  return CGAL::parameters::number_of_iterations(o.iterations)
-      .number_of_relaxation_steps(o.relaxation_steps)
-      .ilsa_penalty_steps(o.penalty_steps)
-      .ilsa_penalty_gauss_seidel(o.penalty_gauss_seidel)
-      .ilsa_tangential_displacement(o.tangential)
-      .ilsa_tangential_sweeps(o.tangential_sweeps)
-      .ilsa_relaxation(o.relax1)
-      .ilsa_penalty_relaxation(o.relax2)
-      .ilsa_penalty_mu(o.mu)
-      .ilsa_length_weight(o.wl)
-      .ilsa_area_weight(o.wa)
-      .ilsa_feature_angle(o.feature_angle)
-      .ilsa_fix_unattached_candidates(o.fix_unattached)
-      .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
-      .ilsa_crease_contrast(o.crease_contrast)
-      .ilsa_minimum_open_crease_edges(o.minimum_open_crease_edges)
-      .ilsa_minimum_quality_gain(o.minimum_gain)
-      .ilsa_minimum_remaining_gain(o.minimum_remaining_gain)
-      .ilsa_retry_distance(o.retry_distance)
-      .do_project(o.project)
-      .use_safety_constraints(o.safety)
-      .ilsa_quality_monotone(o.monotone)
-      .ilsa_reject_worsening_moves(o.reject_worsening)
-      .ilsa_fidelity_tolerance(o.fidelity_tolerance)
-      .callback(callback)
-      .verbose(o.verbose);
+// The crease edges of --sharp-edges (a file of vertex index pairs) or
+// --detect-sharp-edges (CGAL's detect_sharp_edges()), one flag per edge of `mesh`.
+std::vector<unsigned char> crease_edges(const Options& o, Mesh& mesh) {
+  std::vector<unsigned char> crease(num_edges(mesh), 0);
+  if (o.detect_sharp_edges) {
+    auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:ilsa_detected_sharp", false).first;
+    PMP::detect_sharp_edges(mesh, *o.detect_sharp_edges, sharp);
+    for (auto e : edges(mesh)) crease[std::size_t(e)] = sharp[e] ? 1 : 0;
+    mesh.remove_property_map(sharp);
+    return crease;
+  }
+  std::ifstream in(o.sharp_edges_file);
+  if (!in) throw std::runtime_error("--sharp-edges: cannot read '" + o.sharp_edges_file + "'");
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream fields(line);
+    double a = 0, b = 0;
+    std::string rest;
+    if (!(fields >> a)) continue; // a blank or comment line
+    const std::string where = "--sharp-edges: '" + o.sharp_edges_file + "' line " + std::to_string(number);
+    if (!(fields >> b) || (fields >> rest))
+      throw std::runtime_error(where + ": expected two vertex indices, got '" + line + "'");
+    const double n = double(num_vertices(mesh));
+    for (double i : {a, b})
+      if (!(i >= 0 && i < n && i == std::floor(i))) {
+        std::ostringstream index;
+        index << i;
+        throw std::runtime_error(where + ": no vertex " + index.str() + " (the input has " +
+                                 std::to_string(num_vertices(mesh)) + ", numbered from 0)");
+      }
+    const auto h = halfedge(Mesh::Vertex_index(Mesh::size_type(a)), Mesh::Vertex_index(Mesh::size_type(b)), mesh);
+    if (!h.second)
+      throw std::runtime_error(where + ": vertices " + std::to_string(std::size_t(a)) + " and " +
+                               std::to_string(std::size_t(b)) + " share no edge");
+    crease[std::size_t(edge(h.first, mesh))] = 1;
+  }
+  return crease;
 }
 
 // The library checks its parameters before it reads the mesh: an empty mesh
-// tests the flags' values before the input is read and anything printed
-// (without --verbose, which would print the empty mesh's vertex types).
-void check_parameters(Options o) {
+// tests the flags' values before the input is read and anything printed.
+void check_parameters(const Options& o) {
   Mesh empty;
-  o.verbose = false;
-  const auto np = smoothing_parameters(o, std::function<bool(double)>());
   try {
-    if (o.quality_floor)
-      PMP::smooth_surface_mesh_ilsa(empty, np.ilsa_quality_floor(*o.quality_floor));
-    else
-      PMP::smooth_surface_mesh_ilsa(empty, np);
+    with_parameters(o, std::function<bool(double)>(), true,
+                    [&](const auto& np) { return PMP::smooth_surface_mesh_ilsa(empty, np); });
   } catch (const PMP::ILSA_error& e) {
     throw std::runtime_error(in_flag_terms(e.what()));
   }
 }
 
-int run(const Options& o) {
+int run(Options o) {
   Mesh mesh;
   check_parameters(o);
   if (!CGAL::IO::read_polygon_mesh(o.input, mesh))
@@ -415,17 +394,23 @@ int run(const Options& o) {
     if (!PMP::triangulate_faces(mesh)) throw std::runtime_error("--triangulate could not split every face");
     std::cout << "triangulated: " << polygons << " faces split, " << num_faces(mesh) << " triangles\n";
   }
+  if (!o.sharp_edges_file.empty() || o.detect_sharp_edges) {
+    o.crease_edges = crease_edges(o, mesh);
+    std::cout << "crease edges: " << std::count(o.crease_edges->begin(), o.crease_edges->end(), 1) << " from "
+              << (o.detect_sharp_edges ? "detect_sharp_edges() at " + std::to_string(*o.detect_sharp_edges) + " deg"
+                                       : "'" + o.sharp_edges_file + "'")
+              << "\n";
+  }
   print_quality("before", PMP::mesh_quality_ilsa(mesh));
 
   const Mesh original = mesh;
   const unsigned int total = o.iterations;
-  const bool progress = o.progress.value_or(isatty(fileno(stderr)) != 0) && !o.verbose;
+  const bool progress = o.progress.value_or(isatty(fileno(stderr)) != 0);
   const std::function<bool(double)> show_progress = [&](double advancement) {
     std::cerr << "\rILSA iteration " << std::lround(advancement * total) << " of at most " << total << std::flush;
     return true;
   };
   const auto start = std::chrono::steady_clock::now();
-  const auto np = smoothing_parameters(o, progress ? show_progress : std::function<bool(double)>());
   // Sequential with one thread, TBB otherwise (when the package was built with it).
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, o.threads);
@@ -436,7 +421,7 @@ int run(const Options& o) {
   };
   PMP::ILSA_statistics s;
   try {
-    s = o.quality_floor ? smooth(np.ilsa_quality_floor(*o.quality_floor)) : smooth(np);
+    s = with_parameters(o, progress ? show_progress : std::function<bool(double)>(), true, smooth);
   } catch (const PMP::ILSA_error& e) {
     throw std::runtime_error(in_flag_terms(e.what()));
   }
@@ -466,12 +451,9 @@ int run(const Options& o) {
               << s.certified_distance << ", feature lines at most " << s.certified_crease_distance
               << " [both ways, relative to the bounding-box diagonal; inf: no bound enforced]\n";
   const bool full = o.report == "full" || (o.report == "auto" && num_faces(mesh) <= Options::full_report_faces);
-  const PMP::ILSA_fidelity_summary f =
-      PMP::mesh_fidelity_ilsa(original, mesh,
-                              CGAL::parameters::ilsa_feature_angle(o.feature_angle)
-                                  .ilsa_crease_contrast(o.crease_contrast)
-                                  .ilsa_minimum_open_crease_edges(o.minimum_open_crease_edges)
-                                  .ilsa_compute_hausdorff_distance(full));
+  const PMP::ILSA_fidelity_summary f = with_crease_parameters(o, [&](const auto& np) {
+    return PMP::mesh_fidelity_ilsa(original, mesh, np.ilsa_compute_hausdorff_distance(full));
+  });
   std::cout << std::scientific << std::setprecision(2) << "fidelity: " << f.number_of_flipped_faces
             << " flipped faces, vertex distance to input max " << f.max_vertex_distance << " mean "
             << f.mean_vertex_distance << ", ";
@@ -483,19 +465,6 @@ int run(const Options& o) {
             << f.max_crease_deviation << " mean " << f.mean_crease_deviation;
   if (f.closed) std::cout << ", volume change " << f.volume_change;
   std::cout << " [distances relative to the bounding-box diagonal]\n";
-  if (o.report == "full" && (o.crease_contrast > 0 || o.minimum_open_crease_edges > 1)) {
-    // The same along every edge beyond the feature angle, the curvature that
-    // the contrast and the open-crease rule do not take for creases included
-    // (user manual, "Crease contrast" and "Open Crease Lines").
-    const auto all = PMP::mesh_fidelity_ilsa(original, mesh,
-                                             CGAL::parameters::ilsa_feature_angle(o.feature_angle)
-                                                 .ilsa_crease_contrast(0.)
-                                                 .ilsa_minimum_open_crease_edges(0)
-                                                 .ilsa_compute_hausdorff_distance(false));
-    std::cout << "feature lines without the contrast: deviation (" << all.number_of_sharp_edges
-              << " edges beyond the feature angle, both ways) max " << all.max_crease_deviation << " mean "
-              << all.mean_crease_deviation << "\n";
-  }
 
   if (o.worst > 0) print_worst_faces(original, mesh, o.worst, o);
 
@@ -514,12 +483,9 @@ int run(const Options& o) {
   if (o.color_by_type) {
     // The types of the input, which the smoothing used.
     std::map<Mesh::Vertex_index, PMP::ILSA_vertex_type> types;
-    PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types),
-                                CGAL::parameters::ilsa_feature_angle(o.feature_angle)
-                                    .ilsa_fix_unattached_candidates(o.fix_unattached)
-                                    .ilsa_crease_kink_angle(o.kink_angle.value_or(o.feature_angle))
-                                    .ilsa_crease_contrast(o.crease_contrast)
-                                    .ilsa_minimum_open_crease_edges(o.minimum_open_crease_edges));
+    with_crease_parameters(o, [&](const auto& np) {
+      return PMP::classify_vertices_ilsa(original, boost::make_assoc_property_map(types), np);
+    });
     auto colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
     for (auto v : vertices(mesh)) {
       const PMP::ILSA_vertex_type t = types[v];

@@ -56,6 +56,52 @@ struct Soup {
   std::vector<std::array<std::size_t, 3>> triangles;
 };
 
+// The classification rules the package fixes, varied for the tests: the
+// package's for `feature_angle`, changed by `change`.
+using Rules = PMP::internal::ILSA::Classification_options;
+template <class Change> Rules rules(double feature_angle, bool paper, const Change& change) {
+  Rules r = Rules::rules(feature_angle, paper);
+  change(r);
+  return r;
+}
+
+// Classifies `m` under `rules` into `types` (as classify_vertices_ilsa());
+// `np` gives the constraint maps.
+template <class Mesh, class TypeMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+PMP::ILSA_statistics classify_with_rules(const Mesh& m, const Rules& rules, TypeMap& types,
+                                         const NamedParameters& np = CGAL::parameters::default_values()) {
+  PMP::internal::ILSA::Set_up_incidences incidences;
+  const auto input = PMP::internal::ILSA::classified_flat_copy(m, get(CGAL::vertex_point, m), np, incidences, &rules);
+  for (std::size_t i = 0; i < input.vertices.size(); ++i) types[input.vertices[i]] = input.classification.type[i];
+  PMP::ILSA_statistics s;
+  PMP::internal::ILSA::count_types(input.classification, s);
+  return s;
+}
+
+// Smooths `m` with the named parameters `np`, the smoothing parameters they
+// select then changed by `change` (the constants the package fixes, varied
+// for the tests), and the classification `rules` when given.
+template <class Tag = CGAL::Sequential_tag, class Mesh, class Change,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+PMP::ILSA_statistics smooth_with_changes(Mesh& m, const Change& change,
+                                         const NamedParameters& np = CGAL::parameters::default_values(),
+                                         const Rules* rules = nullptr) {
+  PMP::internal::ILSA::Smoothing_parameters p = PMP::internal::ILSA::read_smoothing_parameters(np);
+  change(p);
+  return PMP::internal::ILSA::smooth<Tag>(vertices(m), m, np, &p, rules);
+}
+
+// The number of feature edges of `m` under `rules`: the edges the crease bound
+// holds and mesh_fidelity_ilsa() measures.
+template <class Mesh> std::size_t feature_edge_count(const Mesh& m, const Rules& rules) {
+  PMP::internal::ILSA::Set_up_incidences incidences;
+  const auto input = PMP::internal::ILSA::classified_flat_copy(m, get(CGAL::vertex_point, m),
+                                                               CGAL::parameters::default_values(), incidences, &rules);
+  std::size_t n = 0;
+  for (unsigned char f : input.classification.feature_edge) n += f;
+  return n;
+}
+
 template <class Mesh> Mesh to_mesh(const Soup& soup) {
   Mesh m;
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.triangles, m);

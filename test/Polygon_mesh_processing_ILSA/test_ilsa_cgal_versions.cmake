@@ -1,5 +1,4 @@
-# The same results with every supported CGAL (user manual, "Supported CGAL
-# Versions"): ilsa_smooth built against this build's CGAL (TOOL) and the same
+# The same results with every supported CGAL (user manual, "Supported CGAL Versions and Compilers"): ilsa_smooth built against this build's CGAL (TOOL) and the same
 # tool built against another CGAL (REFERENCE, e.g. Debian's 5.5.1 when this
 # build uses 6.1.1) smooth every bundled mesh, and every mesh of the shared
 # data folder when it exists, to the same file, byte for byte. Both tools must

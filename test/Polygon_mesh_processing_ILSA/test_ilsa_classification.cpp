@@ -77,11 +77,9 @@ template <class Mesh> void test_fandisk() {
   // them; smoothing them turns exactly those into smooth vertices.
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Type> relaxed;
   // The paper's four-type rule: no crease contrast, no open-crease rule, no kinks.
-  const auto paper_but_unattached =
-      CGAL::parameters::ilsa_crease_kink_angle(180.).ilsa_crease_contrast(0.).ilsa_minimum_open_crease_edges(0);
-  const auto paper = paper_but_unattached.ilsa_fix_unattached_candidates(true);
-  const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(relaxed),
-                                             paper_but_unattached.ilsa_fix_unattached_candidates(false));
+  const auto paper = CGAL::parameters::ilsa_paper_variant(true);
+  const auto s =
+      classify_with_rules(m, rules(20., true, [](Rules& r) { r.fix_unattached_candidates = false; }), relaxed);
   assert(s.number_of_corner_vertices == 36);
   assert(s.number_of_ridge_vertices == 823);
   assert(s.number_of_kink_vertices == 0);
@@ -89,8 +87,8 @@ template <class Mesh> void test_fandisk() {
   // Kinks (user manual): one ridge vertex of the paper's rule, where the crease
   // folds back (its two sharp edges meet at about 19 degrees), becomes a corner.
   std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, Type> with_kinks;
-  const auto k = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(with_kinks),
-                                             CGAL::parameters::ilsa_fix_unattached_candidates(true));
+  const auto k =
+      classify_with_rules(m, rules(20., false, [](Rules& r) { r.fix_unattached_candidates = true; }), with_kinks);
   const auto p = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(relaxed), paper);
   assert(k.number_of_kink_vertices == 1);
   assert(k.number_of_ridge_vertices == p.number_of_ridge_vertices - 1);
@@ -113,25 +111,24 @@ template <class Mesh> void test_fandisk() {
 void test_horse_counts() {
   const Surface_mesh m = read_mesh<Surface_mesh>(data_file("horse.ply"));
   std::map<Surface_mesh::Vertex_index, Type> types;
-  // The paper's classification but for the kink angle.
-  const auto paper =
-      CGAL::parameters::ilsa_crease_contrast(0.).ilsa_minimum_open_crease_edges(0).ilsa_fix_unattached_candidates(true);
+  // The paper's classification, and with kink angles.
+  auto paper_with_kinks = [](double feature_angle, double kink) {
+    return rules(feature_angle, true, [kink](Rules& r) { r.kink_angle_degrees = kink; });
+  };
   const auto s =
-      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), paper.ilsa_crease_kink_angle(180.));
+      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), CGAL::parameters::ilsa_paper_variant(true));
   assert(s.number_of_ridge_vertices == 1698);
   assert(s.number_of_corner_vertices == 2792);
   assert(s.number_of_smooth_vertices == 48485 - 1698 - 2792);
   // The default kink rule turns ridge vertices into corners, nothing else; a
   // larger kink angle fewer.
-  const auto k = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), paper);
-  const auto k45 =
-      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), paper.ilsa_crease_kink_angle(45.));
+  const auto k = classify_with_rules(m, paper_with_kinks(20., 20.), types);
+  const auto k45 = classify_with_rules(m, paper_with_kinks(20., 45.), types);
   assert(k.number_of_kink_vertices > k45.number_of_kink_vertices && k45.number_of_kink_vertices > 0);
   assert(k.number_of_ridge_vertices + k.number_of_kink_vertices == 1698);
   assert(k.number_of_corner_vertices == 2792 + k.number_of_kink_vertices);
   // A larger feature angle finds fewer features.
-  const auto s120 =
-      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(types), paper.ilsa_feature_angle(60.));
+  const auto s120 = classify_with_rules(m, paper_with_kinks(60., 60.), types);
   assert(s120.number_of_ridge_vertices + s120.number_of_corner_vertices <
          s.number_of_ridge_vertices + s.number_of_corner_vertices);
 }
@@ -183,15 +180,6 @@ void test_parameter_check() {
     bool thrown = false;
     try {
       PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(t), CGAL::parameters::ilsa_feature_angle(angle));
-    } catch (const PMP::ILSA_error&) {
-      thrown = true;
-    }
-    assert(thrown);
-  }
-  for (double kink : {-1., 181., std::nan("")}) {
-    bool thrown = false;
-    try {
-      PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(t), CGAL::parameters::ilsa_crease_kink_angle(kink));
     } catch (const PMP::ILSA_error&) {
       thrown = true;
     }
@@ -268,10 +256,10 @@ template <class Mesh> void test_named_parameters() {
   assert(a.mean_aspect_ratio < plain.mean_aspect_ratio);
 
   Mesh x = m, y = m;
-  PMP::smooth_surface_mesh_ilsa(x,
-                                CGAL::parameters::number_of_iterations(3).ilsa_penalty_mu(0.5).relax_constraints(true));
-  PMP::smooth_surface_mesh_ilsa(y,
-                                CGAL::parameters::relax_constraints(true).ilsa_penalty_mu(0.5).number_of_iterations(3));
+  PMP::smooth_surface_mesh_ilsa(
+      x, CGAL::parameters::number_of_iterations(3).ilsa_quality_floor(0.4).relax_constraints(true));
+  PMP::smooth_surface_mesh_ilsa(
+      y, CGAL::parameters::relax_constraints(true).ilsa_quality_floor(0.4).number_of_iterations(3));
   assert(points_of(x) == points_of(y) && !(points_of(x) == points_of(m)));
 
   // mesh_fidelity_ilsa: the Hausdorff distance (CGAL's bounded-error one) is

@@ -1,9 +1,7 @@
-// Creases keep their shape (user manual, "Crease kinks" and "Crease
-// fidelity"): a vertex where a crease turns by more than the kink angle stays
-// bit-identical, like a corner; a gently curved crease still lets its vertices
-// slide; the input's sharp edges and the same edges of the result stay within
-// the fidelity tolerance of each other, both ways (mesh_fidelity_ilsa). Also
-// with the creases given through edge_is_constrained_map.
+// Creases keep their shape (user manual, "Crease Kinks" and "Fidelity Certificate"): a vertex where a crease turns by
+// more than the kink angle stays bit-identical, like a corner; a gently curved crease still lets its vertices slide;
+// the input's sharp edges and the same edges of the result stay within the fidelity tolerance of each other, both ways
+// (mesh_fidelity_ilsa). Also with the creases given through edge_is_constrained_map.
 //
 // The meshes are height fields z = s·dist((x, y), R) over a square, R a convex
 // region of the plane: flat inside R, rising at slope s outside, smooth
@@ -213,34 +211,35 @@ template <class Mesh> void test_kinks_stay_and_creases_keep_shape() {
   }
 }
 
-// Each of the two mechanisms alone. With the paper's acceptance of moves (no
-// fidelity bound, worsening moves kept), the kink rule keeps the tip of a sharp
-// wedge and the paper's classification lets it slide along the crease; without the kink rule, the crease bound keeps
-// the crease within the tolerance.
+// Each of the two mechanisms alone. Without the fidelity bound, the kink rule
+// keeps the tip of a sharp wedge and the paper's variant lets it slide along
+// the crease; without the kink rule, the crease bound keeps the crease within
+// the tolerance.
 void test_kink_rule_and_crease_bound_alone() {
   const Crease_mesh cm = wedge(60., 0.07);
   const Surface_mesh original = to_mesh<Surface_mesh>(cm.soup);
   const double unbounded = std::numeric_limits<double>::infinity();
-  auto tip_moved = [&](double kink_angle) {
+  // The kink rule is the package's (the paper's variant has none).
+  auto tip_moved = [&](bool paper) {
     Surface_mesh m = original;
     auto creases = crease_map(cm, m);
     const auto s =
-        PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_crease_kink_angle(kink_angle)
+        PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_paper_variant(paper)
                                              .ilsa_fidelity_tolerance(unbounded)
-                                             .ilsa_reject_worsening_moves(false)
                                              .edge_is_constrained_map(boost::make_assoc_property_map(creases))
                                              .relax_constraints(true));
-    assert((s.number_of_kink_vertices == 0) == (kink_angle == 180.));
+    assert((s.number_of_kink_vertices == 0) == paper);
     return !(points_of(m)[cm.kinks[0]] == points_of(original)[cm.kinks[0]]);
   };
-  assert(!tip_moved(20.));
-  assert(tip_moved(180.));
+  assert(!tip_moved(false));
+  assert(tip_moved(true));
 
   for (const Crease_mesh& c : {cm, triangle_region(0.07)}) {
     const Surface_mesh input = to_mesh<Surface_mesh>(c.soup);
     Surface_mesh m = input;
-    PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_crease_kink_angle(180.));
-    const double deviation = PMP::mesh_fidelity_ilsa(input, m).max_crease_deviation;
+    const auto paper = CGAL::parameters::ilsa_paper_variant(true);
+    PMP::smooth_surface_mesh_ilsa(m, paper);
+    const double deviation = PMP::mesh_fidelity_ilsa(input, m, paper).max_crease_deviation;
     std::cout << "kink rule off: crease deviation " << deviation << std::endl;
     assert(deviation <= tolerance);
   }
@@ -303,23 +302,17 @@ void test_two_sided_measure() {
   assert(PMP::mesh_fidelity_ilsa(original, original, np).max_crease_deviation <= 1e-15); // rounding only
 }
 
-// The classification's other rules as in the paper (no open-crease rule,
-// candidates without sharp edge fixed), to see the crease contrast alone.
-auto paper_open_lines() {
-  return CGAL::parameters::ilsa_minimum_open_crease_edges(0).ilsa_fix_unattached_candidates(true);
-}
-
-// The crease contrast (user manual, "Crease contrast"): the creases of a CAD
+// The crease contrast (user manual, "Crease Contrast"): the creases of a CAD
 // model stay creases (the fandisk keeps its ridge vertices), the curvature of
 // a coarse organic mesh is no longer taken for creases (the elephant's
-// corners drop to less than a third), 0 is the paper's rule, 5 the default, and a negative or
-// non-finite contrast is rejected. The other rules of the classification as in the paper.
+// corners drop to less than a third); 0 is the paper's rule. The other rules
+// of the classification as in the paper. Smoothed, the elephant's feature
+// lines are fewer by default than with the paper's variant, both within the
+// tolerance, and its mean q higher.
 template <class Mesh> void test_crease_contrast() {
   auto types = [](const Mesh& m, double contrast) {
     std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, PMP::ILSA_vertex_type> map;
-    const auto s = PMP::classify_vertices_ilsa(m, boost::make_assoc_property_map(map),
-                                               paper_open_lines().ilsa_crease_contrast(contrast));
-    return s;
+    return classify_with_rules(m, rules(20., true, [contrast](Rules& r) { r.crease_contrast = contrast; }), map);
   };
   const Mesh fandisk = read_mesh<Mesh>(data_file("fandisk.off"));
   const Mesh elephant = read_mesh<Mesh>(data_file("elephant.off"));
@@ -335,60 +328,32 @@ template <class Mesh> void test_crease_contrast() {
          contrasted_cad.number_of_corner_vertices == paper_cad.number_of_corner_vertices);
   assert(3 * contrasted_organic.number_of_corner_vertices < paper_organic.number_of_corner_vertices);
   assert(contrasted_organic.number_of_smooth_vertices > 2 * paper_organic.number_of_smooth_vertices);
-  // The feature edges the contrast drops are curvature, not crease lines: the
-  // crease bound no longer holds them, and mesh_fidelity_ilsa() given the same
-  // contrast measures the crease lines that are left, within the tolerance.
-  // Freed of the bound, the elephant's vertices reach a higher mean q than
-  // with the paper's rule (user manual, "Crease contrast").
-  auto smoothed = [](const Mesh& input, double contrast) {
+
+  auto smoothed = [](const Mesh& input, bool paper) {
     Mesh m = input;
-    PMP::smooth_surface_mesh_ilsa(m, paper_open_lines().ilsa_crease_contrast(contrast));
+    PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_paper_variant(paper));
     return m;
   };
-  const Mesh paper_smoothed = smoothed(elephant, 0.), contrast_smoothed = smoothed(elephant, 5.);
-  const auto crease_lines = [](const Mesh& original, const Mesh& m, double contrast) {
+  const Mesh paper_smoothed = smoothed(elephant, true), default_smoothed = smoothed(elephant, false);
+  const auto crease_lines = [](const Mesh& original, const Mesh& m, bool paper) {
     return PMP::mesh_fidelity_ilsa(original, m,
-                                   CGAL::parameters::ilsa_crease_contrast(contrast)
-                                       .ilsa_minimum_open_crease_edges(0)
-                                       .ilsa_compute_hausdorff_distance(false));
+                                   CGAL::parameters::ilsa_paper_variant(paper).ilsa_compute_hausdorff_distance(false));
   };
-  const auto paper_lines = crease_lines(elephant, paper_smoothed, 0.);
-  const auto contrast_lines = crease_lines(elephant, contrast_smoothed, 5.);
+  const auto paper_lines = crease_lines(elephant, paper_smoothed, true);
+  const auto default_lines = crease_lines(elephant, default_smoothed, false);
   const double paper_q = PMP::mesh_quality_ilsa(paper_smoothed).mean_aspect_ratio;
-  const double contrast_q = PMP::mesh_quality_ilsa(contrast_smoothed).mean_aspect_ratio;
-  std::cout << "crease contrast 5, elephant: crease edges " << paper_lines.number_of_sharp_edges << " -> "
-            << contrast_lines.number_of_sharp_edges << ", crease deviation " << paper_lines.max_crease_deviation
-            << " -> " << contrast_lines.max_crease_deviation << ", mean q " << paper_q << " -> " << contrast_q
+  const double default_q = PMP::mesh_quality_ilsa(default_smoothed).mean_aspect_ratio;
+  std::cout << "elephant, paper's variant -> defaults: feature edges " << paper_lines.number_of_sharp_edges << " -> "
+            << default_lines.number_of_sharp_edges << ", crease deviation " << paper_lines.max_crease_deviation
+            << " -> " << default_lines.max_crease_deviation << ", mean q " << paper_q << " -> " << default_q
             << std::endl;
   const double tolerance = PMP::internal::ILSA::defaults::fidelity_tolerance + 1e-12; // rounding of the write-back
-  assert(2 * contrast_lines.number_of_sharp_edges < paper_lines.number_of_sharp_edges);
-  assert(paper_lines.max_crease_deviation <= tolerance && contrast_lines.max_crease_deviation <= tolerance);
-  assert(contrast_q > paper_q);
+  assert(2 * default_lines.number_of_sharp_edges < paper_lines.number_of_sharp_edges);
+  assert(paper_lines.max_crease_deviation <= tolerance && default_lines.max_crease_deviation <= tolerance);
+  assert(default_q > paper_q);
   // The CAD model's crease lines are all kept.
-  assert(crease_lines(fandisk, fandisk, 5.).number_of_sharp_edges ==
-         crease_lines(fandisk, fandisk, 0.).number_of_sharp_edges);
-  // The default is a contrast of 5, in the smoother and in the fidelity summary.
-  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, PMP::ILSA_vertex_type> map;
-  const auto defaults = PMP::classify_vertices_ilsa(elephant, boost::make_assoc_property_map(map), paper_open_lines());
-  assert(defaults.number_of_corner_vertices == contrasted_organic.number_of_corner_vertices &&
-         defaults.number_of_ridge_vertices == contrasted_organic.number_of_ridge_vertices);
-  Mesh default_smoothed = elephant;
-  PMP::smooth_surface_mesh_ilsa(default_smoothed, paper_open_lines());
-  assert(points_of(default_smoothed) == points_of(contrast_smoothed));
-  assert(PMP::mesh_fidelity_ilsa(
-             elephant, contrast_smoothed,
-             CGAL::parameters::ilsa_minimum_open_crease_edges(0).ilsa_compute_hausdorff_distance(false))
-             .number_of_sharp_edges == contrast_lines.number_of_sharp_edges);
-  for (const double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
-    Mesh m = elephant;
-    bool thrown = false;
-    try {
-      PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_crease_contrast(bad));
-    } catch (const PMP::ILSA_error& e) {
-      thrown = std::string(e.what()).find("ilsa_crease_contrast") != std::string::npos;
-    }
-    assert(thrown && points_of(m) == points_of(elephant));
-  }
+  assert(crease_lines(fandisk, fandisk, false).number_of_sharp_edges ==
+         crease_lines(fandisk, fandisk, true).number_of_sharp_edges);
 }
 
 // The open-crease rule alone (internal/ILSA/feature_lines.h): which connected
@@ -421,26 +386,25 @@ void test_open_line_rule() {
   std::cout << "open-crease rule: short open sets cleared, closed and border-to-border ones kept" << std::endl;
 }
 
-// The open-crease rule in the classification, the smoother and the fidelity
-// summary (user manual, "Open Crease Lines"): the creases of a CAD model stay
-// (the fandisk's, a cube's twelve edges, a fold from border to border), the
-// short pieces of curvature of a coarse organic mesh are no longer creases
-// (the elephant loses its ridge vertices and most of its corners), the
-// smoother and mesh_fidelity_ilsa() drop the same edges, 20 edges and smoothed
-// candidates are the defaults, and a negative minimum is rejected.
+// The open-crease rule in the classification and the fidelity summary (user
+// manual, "Open Crease Lines"): the creases of a CAD model stay (the
+// fandisk's, a cube's twelve edges, a fold from border to border), the short
+// pieces of curvature of a coarse organic mesh are no longer creases (the
+// elephant loses its ridge vertices and most of its corners), and the
+// smoother and mesh_fidelity_ilsa() drop the same edges.
 template <class Mesh> void test_open_crease_lines() {
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
-  auto types = [](const Mesh& m, std::size_t minimum) {
+  auto open_rule = [](std::size_t minimum) {
+    return rules(20., false, [minimum](Rules& r) {
+      r.minimum_open_crease_edges = minimum;
+      r.fix_unattached_candidates = true;
+    });
+  };
+  auto types = [&](const Mesh& m, std::size_t minimum) {
     std::map<vertex_descriptor, PMP::ILSA_vertex_type> map;
-    return PMP::classify_vertices_ilsa(
-        m, boost::make_assoc_property_map(map),
-        CGAL::parameters::ilsa_minimum_open_crease_edges(minimum).ilsa_fix_unattached_candidates(true));
+    return classify_with_rules(m, open_rule(minimum), map);
   };
-  auto crease_edges = [](const Mesh& m, std::size_t minimum) {
-    return PMP::mesh_fidelity_ilsa(
-               m, m, CGAL::parameters::ilsa_minimum_open_crease_edges(minimum).ilsa_compute_hausdorff_distance(false))
-        .number_of_sharp_edges;
-  };
+  auto crease_edges = [&](const Mesh& m, std::size_t minimum) { return feature_edge_count(m, open_rule(minimum)); };
   // A cube of twelve triangles: twelve sharp edges, closed; a fold from border to border, six edges.
   const Mesh box = to_mesh<Mesh>(cube(1));
   Soup fold = grid(6);
@@ -474,47 +438,14 @@ template <class Mesh> void test_open_crease_lines() {
   assert(10 * organic.number_of_ridge_vertices < organic_paper.number_of_ridge_vertices);
   assert(2 * organic.number_of_corner_vertices < organic_paper.number_of_corner_vertices);
 
-  // The smoother drops the same edges from the crease bound: the crease lines
-  // left stay within the tolerance, and at the distance to the input that
-  // tangential_relaxation() takes on the elephant (user manual, "Open Crease
-  // Lines") the freed vertices raise the mean q.
-  const double tolerance = 3e-3;
-  auto smoothed = [&](std::size_t minimum) {
-    Mesh m = elephant;
-    PMP::smooth_surface_mesh_ilsa(
-        m, CGAL::parameters::ilsa_minimum_open_crease_edges(minimum).ilsa_fidelity_tolerance(tolerance));
-    return m;
-  };
-  const Mesh with_rule = smoothed(20), without = smoothed(0);
-  const auto lines = PMP::mesh_fidelity_ilsa(
-      elephant, with_rule, CGAL::parameters::ilsa_minimum_open_crease_edges(20).ilsa_compute_hausdorff_distance(false));
-  const double q = PMP::mesh_quality_ilsa(with_rule).mean_aspect_ratio;
-  const double q_without = PMP::mesh_quality_ilsa(without).mean_aspect_ratio;
-  std::cout << "open crease lines, elephant smoothed: mean q " << q_without << " -> " << q << ", crease edges "
-            << crease_edges(elephant, 0) << " -> " << lines.number_of_sharp_edges << ", deviation "
-            << lines.max_crease_deviation << std::endl;
+  // The smoother's feature lines are the classification's: mesh_fidelity_ilsa()
+  // counts the default rules' feature edges, and they stay within the tolerance.
+  Mesh m = elephant;
+  PMP::smooth_surface_mesh_ilsa(m);
+  const auto lines = PMP::mesh_fidelity_ilsa(elephant, m, CGAL::parameters::ilsa_compute_hausdorff_distance(false));
+  assert(lines.number_of_sharp_edges == feature_edge_count(elephant, rules(20., false, [](Rules&) {})));
   assert(lines.number_of_sharp_edges < crease_edges(elephant, 0));
-  assert(lines.max_crease_deviation <= tolerance + 1e-12);
-  assert(q > q_without + 0.005);
-  // The defaults: 20 edges, candidates without sharp edge smoothed.
-  Mesh defaults = elephant, stated = elephant;
-  PMP::smooth_surface_mesh_ilsa(defaults, CGAL::parameters::ilsa_fidelity_tolerance(tolerance));
-  PMP::smooth_surface_mesh_ilsa(stated, CGAL::parameters::ilsa_minimum_open_crease_edges(20)
-                                            .ilsa_fix_unattached_candidates(false)
-                                            .ilsa_fidelity_tolerance(tolerance));
-  assert(points_of(defaults) == points_of(stated) && points_of(defaults) == points_of(with_rule));
-  assert(PMP::mesh_fidelity_ilsa(elephant, with_rule, CGAL::parameters::ilsa_compute_hausdorff_distance(false))
-             .number_of_sharp_edges == lines.number_of_sharp_edges);
-  {
-    Mesh m = elephant;
-    bool thrown = false;
-    try {
-      PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::ilsa_minimum_open_crease_edges(-1));
-    } catch (const PMP::ILSA_error& e) {
-      thrown = std::string(e.what()).find("ilsa_minimum_open_crease_edges") != std::string::npos;
-    }
-    assert(thrown && points_of(m) == points_of(elephant));
-  }
+  assert(lines.max_crease_deviation <= PMP::internal::ILSA::defaults::fidelity_tolerance + 1e-12);
 }
 
 } // namespace

@@ -25,10 +25,10 @@
 //   around the moved vertices within it of the result (the bound is
 //   certified for every point), and no star with
 //   a lower mean aspect ratio; a run stopped by `ilsa_minimum_quality_gain`
-//   or `ilsa_minimum_remaining_gain` failed one of them in its last iteration
-//   and passed both in the one before (runs with one and two iterations fewer).
+//   failed one of its two stops in its last iteration and passed both in the
+//   one before (runs with one and two iterations fewer).
 // A quarter of the cases leave the flip check as the only guard (quality floor
-// 0, worsening moves accepted, no fidelity bound).
+// 0, the paper's variant, which accepts worsening moves, no fidelity bound).
 // Also always: the connectivity is unchanged; in a fifth of the cases a
 // `callback` stops the run, which must end in time, the callback having seen
 // each iteration run.
@@ -89,7 +89,7 @@ using vd = Surface_mesh::Vertex_index;
 // faces collapsed in both (twice the area at most 1e-6 of the longest edge
 // squared, the package's collapse criterion: a needle of the input may stay a
 // needle, and the sign of its rounding-size normal means nothing; user
-// manual, "Input faces that are collapsed"). A face that collapses anew is
+// manual, "Guarantees"). A face that collapses anew is
 // caught by the test of new degenerate faces.
 std::size_t flipped_faces(const Surface_mesh& a, const Surface_mesh& b) {
   auto collapsed = [](const Surface_mesh& m, Surface_mesh::Face_index f, K::Vector_3& normal) {
@@ -216,37 +216,31 @@ int main() {
     }
     auto draw = [&](double p) { return unit(rng) < p; };
     unsigned iterations = draw(0.1) ? 30 : 1 + unsigned(unit(rng) * 8);
-    const unsigned steps = 1 + unsigned(unit(rng) * 5);
-    double relax1 = 0.05 + 0.95 * unit(rng), relax2 = 0.05 + 0.95 * unit(rng);
-    double mu = std::pow(10., -3 + 5 * unit(rng));
-    double wl = 2 * unit(rng), wa = 2 * unit(rng);
     const double angle = 5 + 75 * unit(rng); // between face normals
-    const bool fix = draw(0.5), monotone = draw(0.1);
-    const double kink_draw = unit(rng); // the default (the feature angle), off, or any
-    const double kink = kink_draw < 0.3 ? angle : kink_draw < 0.5 ? 180. : 180. * unit(rng);
-    const double floor_draw = unit(rng); // the library's default: max(0.5, input minimum)
+    bool paper = draw(0.3);                  // the paper's variant
+    const double floor_draw = unit(rng);     // the library's default: max(0.5, input minimum)
     bool default_floor = floor_draw < 0.3;
     double floor = floor_draw < 0.4 ? 0. : floor_draw < 0.5 ? 0.99 : 0.9 * unit(rng);
-    bool reject_worsening = draw(0.7);
     const double tolerance_draw = unit(rng);
-    double tolerance = tolerance_draw < 0.3   ? 3e-4
+    double tolerance = tolerance_draw < 0.3   ? 5e-4
                        : tolerance_draw < 0.5 ? unbounded
                        : tolerance_draw < 0.6 ? 1e-7
                                               : std::pow(10., -5 + 3 * unit(rng));
     const double gain = draw(0.5) ? 1e-4 : 0.;
-    const double remaining_gain = draw(0.5) ? 2e-3 : 0.;
+    // The second stop goes with the first (user manual, "Stopping Early").
+    const double remaining_gain = gain > 0 ? PMP::internal::ILSA::defaults::minimum_remaining_gain : 0.;
     const bool project = !draw(0.1), safety = !draw(0.1);
     const bool use_range = draw(0.3), use_vertex_map = draw(0.2), use_edge_map = draw(0.25);
     const double edge_angle = 10 + 50 * unit(rng);
     const bool relax = draw(0.5); // constrained edges slide (or stay fixed, CGAL's default)
-    // The flip check alone.
+    // The flip check alone: nothing else holds the moves back.
     const bool only_flip_check = safety && draw(0.25);
     if (only_flip_check) {
-      // Nothing else holds the moves back, and the paper's soap film (area
-      // term) is off: the moves most likely to fold a star.
-      floor = 0., default_floor = false, reject_worsening = false, tolerance = unbounded, ++flip_only;
-      wa = 0., relax1 = relax2 = 1., mu = 100., iterations = (std::max)(iterations, 8u);
+      floor = 0., default_floor = false, paper = true, tolerance = unbounded, ++flip_only;
+      iterations = (std::max)(iterations, 8u);
     }
+    // The paper's variant accepts every move the other tests allow.
+    const bool reject_worsening = !paper;
 
     using ed = Surface_mesh::Edge_index;
     std::vector<vd> range;
@@ -258,43 +252,6 @@ int main() {
     }
     if (use_edge_map) PMP::detect_sharp_edges(original, edge_angle, boost::make_assoc_property_map(constrained_edges));
     std::set<vd> in_range(range.begin(), range.end());
-
-    // The retry distance of dropped moves: the default, 0 (every dropped move
-    // tried again in the next iteration) or any from 1e-3 to 10 mean edge
-    // lengths, drawn from a generator of its own (the other draws stay as they were).
-    std::mt19937 retry_rng(104729u + unsigned(c));
-    const double retry_draw = unit(retry_rng);
-    const double retry = retry_draw < 0.4 ? 0.03 : retry_draw < 0.7 ? 0. : std::pow(10., -3 + 4 * unit(retry_rng));
-
-    // The crease contrast: the paper's rule (0) in half of the cases, else
-    // from 1 to 10, drawn from a generator of its own.
-    std::mt19937 contrast_rng(15485863u + unsigned(c));
-    const double contrast = unit(contrast_rng) < 0.5 ? 0. : 1. + 9. * unit(contrast_rng);
-
-    // The open-crease rule: the paper's (0) in a third of the cases, the
-    // default (20) in a third, else from 2 to 40 edges, drawn from a
-    // generator of its own.
-    std::mt19937 open_rng(49979687u + unsigned(c));
-    const double open_draw = unit(open_rng);
-    const unsigned open_edges = open_draw < 1. / 3.   ? 0u
-                                : open_draw < 2. / 3. ? 20u
-                                                      : 2u + unsigned(39 * unit(open_rng));
-
-    // The sweeps of the penalty step (1 to 12) and the tangential
-    // displacement (on in two cases of three, the default), drawn from a
-    // generator of their own.
-    std::mt19937 penalty_rng(32452843u + unsigned(c));
-    const unsigned penalty_steps = 1 + unsigned(unit(penalty_rng) * 12);
-    const bool tangential = unit(penalty_rng) < 2. / 3.;
-    // Multicolour Gauss-Seidel sweeps of the penalty step in a quarter of the
-    // cases, from a generator of their own.
-    std::mt19937 order_rng(15485863u + unsigned(c));
-    const bool gauss_seidel = unit(order_rng) < 0.25;
-    // With tangential displacements, the normal components dropped once after
-    // the sweeps (the default before "Tangential Sweeps") in a quarter of the
-    // cases, from a generator of its own.
-    std::mt19937 tangent_rng(86028121u + unsigned(c));
-    const bool tangential_sweeps = unit(tangent_rng) >= 0.25;
 
     // A fifth of the cases stop through the callback, after the iteration that
     // reaches `stop_after` (drawn from a generator of its own, so that the
@@ -312,27 +269,10 @@ int main() {
       }
 
     auto np = CGAL::parameters::number_of_iterations(iterations)
-                  .number_of_relaxation_steps(steps)
-                  .ilsa_penalty_steps(penalty_steps)
-                  .ilsa_tangential_displacement(tangential)
-                  .ilsa_tangential_sweeps(tangential_sweeps)
-                  .ilsa_penalty_gauss_seidel(gauss_seidel)
-                  .ilsa_relaxation(relax1)
-                  .ilsa_penalty_relaxation(relax2)
-                  .ilsa_penalty_mu(mu)
-                  .ilsa_length_weight(wl)
-                  .ilsa_area_weight(wa)
                   .ilsa_feature_angle(angle)
-                  .ilsa_fix_unattached_candidates(fix)
-                  .ilsa_quality_monotone(monotone)
-                  .ilsa_reject_worsening_moves(reject_worsening)
-                  .ilsa_crease_kink_angle(kink)
-                  .ilsa_crease_contrast(contrast)
-                  .ilsa_minimum_open_crease_edges(open_edges)
+                  .ilsa_paper_variant(paper)
                   .ilsa_fidelity_tolerance(tolerance)
                   .ilsa_minimum_quality_gain(gain)
-                  .ilsa_minimum_remaining_gain(remaining_gain)
-                  .ilsa_retry_distance(retry)
                   .do_project(project)
                   .use_safety_constraints(safety)
                   .relax_constraints(relax)
@@ -366,10 +306,7 @@ int main() {
     // The vertex types the run used.
     auto classify = [&](const Surface_mesh& input, std::map<vd, PMP::ILSA_vertex_type>& types) {
       const auto classification = CGAL::parameters::ilsa_feature_angle(angle)
-                                      .ilsa_fix_unattached_candidates(fix)
-                                      .ilsa_crease_kink_angle(kink)
-                                      .ilsa_crease_contrast(contrast)
-                                      .ilsa_minimum_open_crease_edges(open_edges)
+                                      .ilsa_paper_variant(paper)
                                       .relax_constraints(relax)
                                       .vertex_is_constrained_map(boost::make_assoc_property_map(constrained_vertices));
       if (use_edge_map)
@@ -466,12 +403,10 @@ int main() {
                                                  CGAL::parameters::ilsa_feature_angle(angle).edge_is_constrained_map(
                                                      boost::make_assoc_property_map(constrained_edges)))
                        : PMP::mesh_fidelity_ilsa(original, m,
-                                                 CGAL::parameters::ilsa_feature_angle(angle)
-                                                     .ilsa_crease_contrast(contrast)
-                                                     .ilsa_minimum_open_crease_edges(open_edges));
+                                                 CGAL::parameters::ilsa_feature_angle(angle).ilsa_paper_variant(paper));
     // No face ends below the input's minimum or the floor, whichever is lower
     // (up to the rounding of writing back the package's normalised coordinates).
-    const double effective_floor = monotone ? 1. : default_floor ? (std::max)(0.5, before.min_aspect_ratio) : floor;
+    const double effective_floor = default_floor ? (std::max)(0.5, before.min_aspect_ratio) : floor;
     const bool kept_minimum = after.min_aspect_ratio >= (std::min)(before.min_aspect_ratio, effective_floor) - 1e-12;
     const double rounding = 1e-12; // of the diagonal: the write-back of normalised coordinates
     // The connectivity is the input's; the callback saw every iteration run and stopped the run in time.
@@ -485,11 +420,9 @@ int main() {
         callback_calls == statistics.number_of_iterations && statistics.number_of_iterations <= allowed;
     bool ok = same_in_parallel && non_finite == 0 && fixed_moved == 0 && transformed_ok && same_faces && callback_ok;
     // Faces of zero area in the input (collapsed edges) have the sum of their
-    // neighbours' unit normals as their orientation (user manual, "Input faces
-    // that are collapsed"): opened again, they may not be reversed against it.
-    // A face counts as opened with twice its area above 1e-5 of its longest
-    // edge squared (ten times the package's collapse tolerance), and as
-    // reversed with a normal more than rounding beyond 90 degrees from that sum.
+    // neighbours' unit normals as their orientation (user manual, "Guarantees"): opened again, they may not be reversed
+    // against it. A face counts as opened with twice its area above 1e-5 of its longest edge squared (ten times the
+    // package's collapse tolerance), and as reversed with a normal more than rounding beyond 90 degrees from that sum.
     std::size_t reversed = 0;
     const auto input_normals = face_normals_of(original), output_normals = face_normals_of(m); // in face order
     for (auto fa : faces(original)) {
@@ -647,7 +580,6 @@ int main() {
           return run(x, CGAL::Sequential_tag(),
                      p.number_of_iterations(unsigned(j))
                          .ilsa_minimum_quality_gain(0.)
-                         .ilsa_minimum_remaining_gain(0.)
                          .callback(std::function<bool(double)>()));
         });
         convergence_ok = convergence_ok && stats.number_of_iterations == j;
@@ -668,22 +600,16 @@ int main() {
     ok = ok && worsening_ok && isolated_ok && convergence_ok;
     if (!ok) {
       ++failures;
-      std::cout << "case " << c << " (" << files[which] << ", iterations " << iterations << ", steps " << steps
-                << ", penalty steps " << penalty_steps << ", Gauss-Seidel " << gauss_seidel << ", tangential "
-                << tangential << ", tangential sweeps " << tangential_sweeps << ", relax1 " << relax1 << ", relax2 "
-                << relax2 << ", mu " << mu << ", wl " << wl << ", wa " << wa << ", angle " << angle << ", fix " << fix
-                << ", floor " << (default_floor ? -1. : floor) << ", monotone " << monotone << ", reject worsening "
-                << reject_worsening << ", kink " << kink << ", crease contrast " << contrast << ", open crease edges "
-                << open_edges << ", tolerance " << tolerance << ", gain " << gain << ", remaining gain "
-                << remaining_gain << ", retry distance " << retry << ", project " << project << ", safety " << safety
-                << ", range " << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map
-                << ", relax " << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges "
-                << collapsed_edges << ", zero-area input faces opened reversed " << reversed << ", distance "
-                << f.max_vertex_distance << ", fixed moved " << fixed_moved << ", non-finite " << non_finite
-                << ", new degenerate " << collapsed << ", min q " << before.min_aspect_ratio << " -> "
-                << after.min_aspect_ratio << ", crease deviation " << f.max_crease_deviation
-                << ", parallel run identical " << same_in_parallel << ", same faces " << same_faces
-                << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
+      std::cout << "case " << c << " (" << files[which] << ", iterations " << iterations << ", angle " << angle
+                << ", paper's variant " << paper << ", floor " << (default_floor ? -1. : floor) << ", tolerance "
+                << tolerance << ", gain " << gain << ", project " << project << ", safety " << safety << ", range "
+                << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map << ", relax "
+                << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges " << collapsed_edges
+                << ", zero-area input faces opened reversed " << reversed << ", distance " << f.max_vertex_distance
+                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
+                << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
+                << f.max_crease_deviation << ", parallel run identical " << same_in_parallel << ", same faces "
+                << same_faces << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
                 << statistics.number_of_iterations << " iterations run, " << allowed << " allowed"
                 << ", ridge vertex off the creases " << ridge_off_crease << ", one-iteration worsening test "
                 << worsening_ok << ", vertices four edges apart " << isolated_ok << ", convergence stop "

@@ -24,7 +24,6 @@ std::vector<Kernel::Point_3> smooth_with_own_parameters(const Mesh& input) {
 std::size_t iterations_of_chained_parameters(const Mesh& input) {
   Mesh mesh = input;
   return CGAL::Polygon_mesh_processing::smooth_surface_mesh_ilsa(
-             mesh,
-             CGAL::parameters::number_of_iterations(3).ilsa_minimum_quality_gain(0.).ilsa_minimum_remaining_gain(0.))
+             mesh, CGAL::parameters::number_of_iterations(3).ilsa_minimum_quality_gain(0.))
       .number_of_iterations;
 }

@@ -1,4 +1,4 @@
-// Parallel runs (user manual, "Parallel runs"): smooth_surface_mesh_ilsa with
+// Parallel runs (user manual, "Parallel Runs"): smooth_surface_mesh_ilsa with
 // CGAL::Parallel_tag gives the same points, bit for bit, as the sequential
 // run, whatever the number of threads; on several meshes, with the
 // whole-mesh and the vertex-range overloads, with constraint maps, with the
@@ -60,10 +60,9 @@ void compare_perturbed(const char* file, unsigned seed, const NamedParameters& n
 template <class Mesh> void test_meshes() {
   for (const char* name : {"fandisk.off", "elephant.off", "mech-holes-shark.off", "hemisphere.off"})
     compare_perturbed<Mesh>(name, 11, CGAL::parameters::number_of_iterations(5), name);
-  // Multicolour Gauss-Seidel sweeps of the penalty step (user manual, "Sweep
-  // Order"): each colour is a parallel loop.
-  compare_perturbed<Mesh>("fandisk.off", 13, CGAL::parameters::number_of_iterations(4).ilsa_penalty_gauss_seidel(true),
-                          "fandisk, Gauss-Seidel penalty sweeps");
+  // The paper's variant: its displacement and classification.
+  compare_perturbed<Mesh>("fandisk.off", 13, CGAL::parameters::number_of_iterations(4).ilsa_paper_variant(true),
+                          "fandisk, the paper's variant");
   // A tight fidelity tolerance: most moves are shortened or dropped by the
   // certificates (user manual, "Fidelity Certificate"), whose faces are
   // checked in parallel and blamed in face order.
@@ -82,7 +81,7 @@ void test_paths() {
       [](Surface_mesh& m, auto tag) {
         return PMP::smooth_surface_mesh_ilsa<decltype(tag)>(
             m, CGAL::parameters::number_of_iterations(4)
-                   .ilsa_reject_worsening_moves(false)
+                   .ilsa_paper_variant(true)
                    .ilsa_fidelity_tolerance(std::numeric_limits<double>::infinity())
                    .ilsa_quality_floor(0.));
       },

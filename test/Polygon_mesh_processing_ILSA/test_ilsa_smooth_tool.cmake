@@ -6,6 +6,12 @@ file(MAKE_DIRECTORY "${WORK}")
 file(WRITE "${WORK}/garbage.off" "this is not a mesh\n")
 file(WRITE "${WORK}/quads.off" "OFF\n6 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n4 0 1 2 3\n4 1 4 5 2\n")
 file(WRITE "${WORK}/nan.off" "OFF\n4 2 0\n0 0 0\n1 0 0\nnan 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n")
+# Two triangles folded along the edge 0-2; files of crease edges for it.
+file(WRITE "${WORK}/fold.off" "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0.5\n0 1 0\n3 0 1 2\n3 0 2 3\n")
+file(WRITE "${WORK}/fold-creases.txt" "# the fold\n0 2\n\n")
+file(WRITE "${WORK}/no-vertex.txt" "0 5\n")
+file(WRITE "${WORK}/no-edge.txt" "1 3\n")
+file(WRITE "${WORK}/one-index.txt" "0\n")
 
 set(failures 0)
 # expect_failure(name REGEX args...): the error message must match REGEX; an
@@ -47,9 +53,23 @@ expect_failure(bad_worst "--worst expects a non-negative whole number" "${DATA}/
 expect_failure(unknown_option "unknown option '--frobnicate'" "${DATA}/sphere_low.off"
                "${WORK}/unknown_option-out.off" --frobnicate=3)
 expect_failure(unwritable "cannot write" "${DATA}/sphere_low.off" "${WORK}/no-such-dir/unwritable-out.off")
-expect_failure(switch_value "--verbose takes no value" "${DATA}/sphere_low.off" "${WORK}/switch_value-out.off"
-               --verbose=1)
-expect_failure(missing_value "--mu expects a value" "${DATA}/sphere_low.off" "${WORK}/missing_value-out.off" --mu)
+expect_failure(switch_value "--paper takes no value" "${DATA}/sphere_low.off" "${WORK}/switch_value-out.off"
+               --paper=1)
+expect_failure(missing_value "--feature-angle expects a value" "${DATA}/sphere_low.off"
+               "${WORK}/missing_value-out.off" --feature-angle)
+expect_failure(two_crease_sources "--sharp-edges and --detect-sharp-edges both give the crease edges"
+               "${WORK}/fold.off" "${WORK}/two_crease_sources-out.off" --sharp-edges "${WORK}/fold-creases.txt"
+               --detect-sharp-edges 30)
+expect_failure(crease_file_missing "--sharp-edges: cannot read '.*nothing.txt'" "${WORK}/fold.off"
+               "${WORK}/crease_file_missing-out.off" --sharp-edges "${WORK}/nothing.txt")
+expect_failure(crease_no_vertex "no-vertex.txt' line 1: no vertex 5" "${WORK}/fold.off"
+               "${WORK}/crease_no_vertex-out.off" --sharp-edges "${WORK}/no-vertex.txt")
+expect_failure(crease_no_edge "no-edge.txt' line 1: vertices 1 and 3 share no edge" "${WORK}/fold.off"
+               "${WORK}/crease_no_edge-out.off" --sharp-edges "${WORK}/no-edge.txt")
+expect_failure(crease_one_index "one-index.txt' line 1: expected two vertex indices, got '0'" "${WORK}/fold.off"
+               "${WORK}/crease_one_index-out.off" --sharp-edges "${WORK}/one-index.txt")
+expect_failure(detect_angle "--detect-sharp-edges expects an angle in \\[0, 180\\], got '200'" "${WORK}/fold.off"
+               "${WORK}/detect_angle-out.off" --detect-sharp-edges 200)
 expect_failure(bad_report "--report expects auto, summary or full" "${DATA}/sphere_low.off"
                "${WORK}/bad_report-out.off" --report=some)
 expect_failure(color_not_ply "--color-by-quality writes colours to a PLY file" "${DATA}/sphere_low.off"
@@ -58,11 +78,8 @@ expect_failure(color_no_output "--color-by-type writes colours to a PLY file" "$
                --color-by-type)
 # Values the library rejects: the message names the flag, not the library's
 # parameter, says the prefix once and gives the value.
-foreach(case "mu;--mu=-1" "relax1;--relax1=0" "relax2;--relax2;2" "wl;--wl=-1" "wa;--wa;-1"
-             "feature-angle;--feature-angle=190" "kink-angle;--kink-angle=-3" "quality-floor;--quality-floor=1"
-             "fidelity-tolerance;--fidelity-tolerance=0" "min-gain;--min-gain=-1" "iterations;--iterations=200000"
-             "relaxation-steps;--relaxation-steps=0" "min-remaining-gain;--min-remaining-gain=-1"
-             "retry-distance;--retry-distance=-1")
+foreach(case "feature-angle;--feature-angle=190" "quality-floor;--quality-floor;1"
+             "fidelity-tolerance;--fidelity-tolerance=0" "min-gain;--min-gain=-1" "iterations;--iterations=200000")
   list(GET case 0 flag)
   list(REMOVE_AT case 0)
   expect_failure(range_${flag} "^ilsa_smooth: error: --${flag} must be [^\n]*, got -?[0-9]" "${DATA}/sphere_low.off"
@@ -118,11 +135,16 @@ foreach(report full auto)
 endforeach()
 # --progress: one line per iteration on stderr; --no-progress: nothing there.
 expect_success("--progress" err "^\rILSA iteration 1 of at most 2\rILSA iteration 2 of at most 2\n$"
-               "${DATA}/sphere_low.off" --iterations 2 --min-gain 0 --min-remaining-gain 0 --progress)
+               "${DATA}/sphere_low.off" --iterations 2 --min-gain 0 --progress)
 expect_success("--no-progress" err "^$" "${DATA}/sphere_low.off" --iterations 2 --no-progress)
-# --verbose: the vertex types of the input first (not of the parameter check before it is read), then the set-up.
-expect_success("--verbose" err "^ILSA: [1-9][0-9]* smooth, [0-9]+ ridge, [0-9]+ corner, [0-9]+ boundary vertices\nILSA set-up: "
-               "${DATA}/sphere_low.off" --iterations 1 --verbose)
+# The user's crease edges: from a file (the fold's vertices slide along it,
+# its ends are boundary vertices), or from CGAL's detect_sharp_edges().
+expect_success("--sharp-edges" out "crease edges: 1 from '.*fold-creases.txt'\n.*crease deviation \\(1 sharp edges"
+               "${WORK}/fold.off" --sharp-edges "${WORK}/fold-creases.txt")
+expect_success("--detect-sharp-edges" out "crease edges: [1-9][0-9]* from detect_sharp_edges\\(\\) at 30"
+               "${DATA}/fandisk.off" --iterations 1 --detect-sharp-edges 30 --report summary)
+# --paper: the paper's variant runs.
+expect_success("--paper" out "after : aspect ratio" "${DATA}/sphere_low.off" --iterations 1 --paper)
 # --help lists the formats, then --version; --version prints the project's version.
 expect_success("--help" out "\\.off \\.obj \\.ply \\.stl.*--version" --help)
 expect_success("--version" out "^ilsa_smooth ${VERSION} \\(CGAL [0-9.]+\\)\n$" --version)

@@ -22,14 +22,6 @@
 
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 
-// The names of version 1.0.0 (deprecated headers and functions) still work,
-// without their warnings here; under CGAL_NO_DEPRECATED_CODE they are gone.
-#ifndef CGAL_NO_DEPRECATED_CODE
-#define CGAL_NO_DEPRECATION_WARNINGS
-#include <CGAL/Polygon_mesh_processing/ilsa_mesh_quality.h>
-#include <CGAL/Polygon_mesh_processing/ilsa_triangle_quality.h>
-#endif
-
 #include <cctype>
 #include <cstring>
 #include <limits>
@@ -102,7 +94,8 @@ template <class Mesh> void test_planar_grid() {
   // solved by SVD instead of cofactors.
   for (double wl : {1., 0.}) {
     Mesh m = original;
-    PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::number_of_iterations(20).ilsa_length_weight(wl));
+    smooth_with_changes(
+        m, [wl](auto& p) { p.penalty.length_weight = wl; }, CGAL::parameters::number_of_iterations(20));
     for (const Point& p : points_of(m)) assert(p.z() == 0.);
     require(check_invariants(original, m, [](std::size_t, const Point&) { return false; }),
             wl > 0 ? "planar grid" : "planar grid, wl = 0");
@@ -143,10 +136,10 @@ template <class Mesh> void test_sphere() {
   require(check_invariants(original, m, [](std::size_t, const Point&) { return false; }), "sphere");
 }
 
-// ilsa_tangential_displacement: without the projection and the safety check a
+// Tangential displacements: without the projection and the safety check a
 // smooth vertex moves by its displacement, which by default lies in the plane
-// normal to the area-weighted normal of its faces; with `false` (the paper's)
-// it keeps a normal component, which on a sphere is the curvature's.
+// normal to the area-weighted normal of its faces; in the paper's variant it
+// keeps a normal component, which on a sphere is the curvature's.
 template <class Mesh> void test_tangential_displacement() {
   Mesh original = read_mesh<Mesh>(data_file("sphere_low.off"));
   perturb_on_surface(original, 0.3, 6);
@@ -170,10 +163,9 @@ template <class Mesh> void test_tangential_displacement() {
   // The largest normal component of a smooth vertex's move, relative to the mean edge length.
   auto normal_component = [&](bool tangential) {
     Mesh m = original;
-    PMP::smooth_surface_mesh_ilsa(m, CGAL::parameters::number_of_iterations(1)
-                                         .do_project(false)
-                                         .use_safety_constraints(false)
-                                         .ilsa_tangential_displacement(tangential));
+    PMP::smooth_surface_mesh_ilsa(
+        m, CGAL::parameters::number_of_iterations(1).do_project(false).use_safety_constraints(false).ilsa_paper_variant(
+               !tangential));
     const std::vector<Point> after = points_of(m);
     double largest = 0;
     std::size_t moved = 0;
@@ -193,24 +185,29 @@ template <class Mesh> void test_tangential_displacement() {
   assert(paper > 1e-3);
 }
 
-// The sweeps of the two steps are two parameters: number_of_relaxation_steps
-// sets those of Algo. 2 only, ilsa_penalty_steps those of Algo. 3.
-void test_sweep_parameters() {
+// The smoothing parameters: the constants of the method by default, the
+// paper's variant as documented, the stops together.
+void test_smoothing_parameters() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
   const auto defaults = ilsa::read_smoothing_parameters(CGAL::parameters::default_values());
   assert(defaults.sweeps == ilsa::defaults::number_of_relaxation_steps);
   assert(defaults.penalty.sweeps == ilsa::defaults::penalty_steps);
-  assert(defaults.tangential == ilsa::defaults::tangential_displacement);
-  assert(defaults.penalty.tangential_sweeps == ilsa::defaults::tangential_sweeps);
-  const auto ilsa_only = ilsa::read_smoothing_parameters(CGAL::parameters::number_of_relaxation_steps(3));
-  assert(ilsa_only.sweeps == 3 && ilsa_only.penalty.sweeps == ilsa::defaults::penalty_steps);
-  const auto both = ilsa::read_smoothing_parameters(
-      CGAL::parameters::ilsa_penalty_steps(7).number_of_relaxation_steps(3).ilsa_tangential_displacement(false));
-  assert(both.sweeps == 3 && both.penalty.sweeps == 7 && !both.tangential);
-  // The tangential sweeps only with tangential displacements.
-  assert(!both.penalty.tangential_sweeps);
-  assert(!ilsa::read_smoothing_parameters(CGAL::parameters::ilsa_tangential_sweeps(false)).penalty.tangential_sweeps);
-  std::cout << "sweep parameters: read apart" << std::endl;
+  assert(defaults.penalty.tangential && defaults.reject_worsening);
+  assert(defaults.minimum_remaining_gain == ilsa::defaults::minimum_remaining_gain);
+  const auto paper = ilsa::read_smoothing_parameters(CGAL::parameters::ilsa_paper_variant(true));
+  assert(paper.sweeps == defaults.sweeps && paper.penalty.sweeps == paper.sweeps);
+  assert(!paper.penalty.tangential && !paper.reject_worsening);
+  assert(paper.fidelity_tolerance == defaults.fidelity_tolerance && paper.use_safety && paper.do_project);
+  const auto every_iteration = ilsa::read_smoothing_parameters(CGAL::parameters::ilsa_minimum_quality_gain(0.));
+  assert(!every_iteration.may_stop());
+  const auto rules = ilsa::read_classification_options(CGAL::parameters::ilsa_paper_variant(true));
+  assert(rules.fix_unattached_candidates && rules.kink_angle_degrees == 180. && rules.crease_contrast == 0. &&
+         rules.minimum_open_crease_edges == 0);
+  const auto package = ilsa::read_classification_options(CGAL::parameters::ilsa_feature_angle(30.));
+  assert(!package.fix_unattached_candidates && package.kink_angle_degrees == 30. &&
+         package.crease_contrast == ilsa::defaults::crease_contrast &&
+         package.minimum_open_crease_edges == ilsa::defaults::minimum_open_crease_edges);
+  std::cout << "smoothing parameters: defaults, the paper's variant, the stops" << std::endl;
 }
 
 // Same input as Surface_mesh and Polyhedron_3: same coordinates.
@@ -319,15 +316,10 @@ void test_penalty_vertex_normal() {
   assert(nonzero == m.number_of_vertices());
 }
 
-// The sweeps of the penalty step. Multicolour Gauss-Seidel sweeps (user
-// manual, "Sweep Order"): the colouring covers the smooth vertices once and
-// gives no two neighbours the same colour, and the sweeps are those of the
-// vertices one after the other in the order of the colours, each reading the
-// displacements (and targets) the vertices before it wrote, unlike Jacobi
-// sweeps. Tangential sweeps ("Tangential Sweeps", the default): every sweep
-// leaves the displacements in their tangent planes, so that the next one reads
-// tangential displacements, unlike dropping the normal components once after
-// the sweeps.
+// The sweeps of the penalty step are Jacobi sweeps (each vertex reads the
+// previous sweep's displacements), tangential by default ("Tangential
+// Displacements"): every sweep leaves the displacements in their tangent
+// planes; the paper's variant keeps their normal components.
 void test_penalty_sweeps() {
   namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
   ilsa::Set_up_incidences incidences;
@@ -335,18 +327,6 @@ void test_penalty_sweeps() {
   const ilsa::Vertex_classification classification = ilsa::classify(m, incidences, ilsa::Classification_options());
   const ilsa::ILSA_neighborhoods nb =
       ilsa::make_neighborhoods(m, classification, std::vector<unsigned char>(m.number_of_vertices(), 1));
-  const ilsa::Vertex_colours colours = ilsa::colour_vertices(m, nb.smooth);
-
-  std::vector<std::size_t> colour_of(m.number_of_vertices(), std::size_t(-1));
-  for (std::size_t c = 0; c < colours.number_of_colours(); ++c)
-    for (std::size_t i = colours.begin[c]; i < colours.begin[c + 1]; ++i) {
-      assert(colour_of[colours.vertices[i]] == std::size_t(-1));
-      colour_of[colours.vertices[i]] = c;
-    }
-  assert(colours.vertices.size() == nb.smooth.size());
-  for (std::size_t v : nb.smooth)
-    for (const ilsa::Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w)
-      assert(colour_of[*w] != colour_of[v]);
 
   // Displacements of a tenth of the mean edge length, in random directions.
   double mean_edge = 0;
@@ -359,33 +339,33 @@ void test_penalty_sweeps() {
   ilsa::Penalty_parameters p;
   p.sweeps = 3;
   std::vector<double> beta, target;
-  auto sweeps = [&](const ilsa::Vertex_colours* order) {
+  auto sweeps = [&] {
     std::vector<ilsa::Vec3> d = start, buffer;
-    assert(ilsa::adjust_displacement_by_penalty<CGAL::Sequential_tag>(m, m.points, nb, p, d, beta, buffer, target,
-                                                                      order) == p.sweeps);
+    assert(ilsa::adjust_displacement_by_penalty<CGAL::Sequential_tag>(m, m.points, nb, p, d, beta, buffer, target) ==
+           p.sweeps);
     return d;
   };
-  const auto jacobi = sweeps(nullptr), gauss_seidel = sweeps(&colours); // `beta` holds the step's weights
+  const auto jacobi = sweeps(); // `beta` holds the step's weights
 
+  // The same sweeps one vertex after the other, each reading the previous sweep's values.
   std::vector<ilsa::Vec3> d = start;
-  for (std::size_t w = 0; w < m.number_of_vertices(); ++w)
-    for (int i = 0; i < 3; ++i) target[3 * w + i] = m.points[w][i] + d[w][i];
-  for (std::size_t sweep = 0; sweep < p.sweeps; ++sweep)
-    for (std::size_t v : colours.vertices) {
+  for (std::size_t sweep = 0; sweep < p.sweeps; ++sweep) {
+    for (std::size_t w = 0; w < m.number_of_vertices(); ++w)
+      for (int i = 0; i < 3; ++i) target[3 * w + i] = m.points[w][i] + d[w][i];
+    std::vector<ilsa::Vec3> next = d;
+    for (std::size_t v : nb.smooth) {
       const ilsa::Vec3 d_new = ilsa::minimize_penalty_function(m, m.points, d, target, beta, v, p);
-      d[v] = ilsa::without_normal_component(m, m.points, v, p.relax2 * d_new + (1. - p.relax2) * d[v]);
-      for (int i = 0; i < 3; ++i) target[3 * v + i] = m.points[v][i] + d[v][i];
+      next[v] = ilsa::without_normal_component(m, m.points, v, p.relax2 * d_new + (1. - p.relax2) * d[v]);
     }
-  std::size_t same = 0, unlike_jacobi = 0;
-  for (std::size_t v : nb.smooth) same += gauss_seidel[v] == d[v], unlike_jacobi += !(gauss_seidel[v] == jacobi[v]);
-  std::cout << "multicolour sweeps: " << colours.number_of_colours() << " colours of " << nb.smooth.size()
-            << " smooth vertices; " << same << " displacements as in sweeps one vertex after the other, "
-            << unlike_jacobi << " unlike Jacobi sweeps'" << std::endl;
-  assert(colours.number_of_colours() >= 3);
+    d = next;
+  }
+  std::size_t same = 0;
+  for (std::size_t v : nb.smooth) same += jacobi[v] == d[v];
+  std::cout << "Jacobi sweeps: " << same << " of " << nb.smooth.size() << " displacements as sweep by sweep"
+            << std::endl;
   assert(same == nb.smooth.size());
-  assert(unlike_jacobi > nb.smooth.size() / 2);
 
-  // Jacobi sweeps (`jacobi` above) with and without the tangential sweeps.
+  // With and without the tangential sweeps.
   auto largest_normal_component = [&](const std::vector<ilsa::Vec3>& displacements) {
     double largest = 0;
     for (std::size_t v : nb.smooth)
@@ -393,19 +373,13 @@ void test_penalty_sweeps() {
           largest, (displacements[v] - ilsa::without_normal_component(m, m.points, v, displacements[v])).norm());
     return largest / mean_edge;
   };
-  assert(p.tangential_sweeps);
-  p.tangential_sweeps = false;
-  std::vector<ilsa::Vec3> once = sweeps(nullptr);
-  const double normal_without = largest_normal_component(once);
-  ilsa::remove_normal_components<CGAL::Sequential_tag>(m, m.points, nb.smooth, once);
-  std::size_t unlike_once = 0;
-  for (std::size_t v : nb.smooth) unlike_once += (jacobi[v] - once[v]).norm() > 1e-9 * mean_edge;
+  assert(p.tangential);
+  p.tangential = false;
+  const double normal_without = largest_normal_component(sweeps());
   std::cout << "tangential sweeps: largest normal component " << largest_normal_component(jacobi) << " ("
-            << normal_without << " without) mean edge lengths; " << unlike_once
-            << " displacements unlike those of sweeps whose normal components are dropped once after them" << std::endl;
+            << normal_without << " in the paper's variant) mean edge lengths" << std::endl;
   assert(largest_normal_component(jacobi) <= 1e-12);
   assert(normal_without > 1e-3);
-  assert(unlike_once > nb.smooth.size() / 2);
 }
 
 // The core's 3-vector (internal/ILSA/vec3.h) gives the same bits as Eigen's
@@ -504,39 +478,29 @@ template <class Mesh> void test_named_parameter_chaining() {
     return std::make_pair(points_of(m), s.number_of_iterations);
   };
   namespace params = CGAL::parameters;
-  // Both stops disabled, so that every run but the last makes 4 iterations.
+  // The stops disabled, so that every run but the last makes 4 iterations.
   const auto a = run(params::number_of_iterations(4)
                          .ilsa_minimum_quality_gain(0.)
-                         .ilsa_penalty_mu(5.)
-                         .ilsa_minimum_remaining_gain(0.)
-                         .ilsa_relaxation(0.3));
-  const auto b = run(params::ilsa_minimum_remaining_gain(0.)
-                         .ilsa_relaxation(0.3)
-                         .ilsa_penalty_mu(5.)
+                         .ilsa_quality_floor(0.2)
+                         .ilsa_fidelity_tolerance(1e-3)
+                         .ilsa_paper_variant(true));
+  const auto b = run(params::ilsa_paper_variant(true)
+                         .ilsa_fidelity_tolerance(1e-3)
+                         .ilsa_quality_floor(0.2)
                          .number_of_iterations(4)
                          .ilsa_minimum_quality_gain(0.));
-  const auto default_mu = run(
-      params::number_of_iterations(4).ilsa_relaxation(0.3).ilsa_minimum_remaining_gain(0.).ilsa_minimum_quality_gain(
-          0.));
-  const auto default_relax =
-      run(params::ilsa_penalty_mu(5.).ilsa_minimum_quality_gain(0.).number_of_iterations(4).ilsa_minimum_remaining_gain(
-          0.));
-  const auto default_stop = run(params::number_of_iterations(4).ilsa_penalty_mu(5.).ilsa_relaxation(0.3));
+  const auto default_tolerance = run(
+      params::number_of_iterations(4).ilsa_quality_floor(0.2).ilsa_paper_variant(true).ilsa_minimum_quality_gain(0.));
+  const auto default_variant = run(
+      params::ilsa_fidelity_tolerance(1e-3).ilsa_minimum_quality_gain(0.).number_of_iterations(4).ilsa_quality_floor(
+          0.2));
+  const auto default_stop = run(
+      params::number_of_iterations(4).ilsa_fidelity_tolerance(1e-3).ilsa_quality_floor(0.2).ilsa_paper_variant(true));
   assert(a.second == 4 && b.second == 4 && default_stop.second < 4);
   assert(max_difference(a.first, b.first) == 0);
-  assert(max_difference(a.first, default_mu.first) > 1e-6);
-  assert(max_difference(a.first, default_relax.first) > 1e-6);
-  // Every ILSA tag changes the result.
-  const auto c = run(CGAL::parameters::number_of_iterations(4)
-                         .ilsa_minimum_remaining_gain(0.)
-                         .ilsa_minimum_quality_gain(0.)
-                         .ilsa_penalty_mu(5.)
-                         .ilsa_relaxation(0.3)
-                         .ilsa_penalty_relaxation(0.9)
-                         .ilsa_length_weight(2.)
-                         .ilsa_area_weight(0.)
-                         .verbose(false));
-  assert(max_difference(a.first, c.first) > 1e-6);
+  assert(max_difference(a.first, default_tolerance.first) > 1e-6);
+  assert(max_difference(a.first, default_variant.first) > 1e-6);
+  std::cout << "named parameters: chained in both orders, each takes effect" << std::endl;
 }
 
 // Only the vertices of the range move.
@@ -837,28 +801,6 @@ void test_inlined_aspect_ratio() {
   assert(degenerate >= 100000 / 8);
 }
 
-// The deprecated names of version 1.0.0 give the new functions' values.
-void test_deprecated_names() {
-#ifndef CGAL_NO_DEPRECATED_CODE
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
-  std::mt19937 rng(12);
-  std::normal_distribution<double> normal;
-  std::size_t compared = 0;
-  for (int i = 0; i < 1000; ++i) {
-    std::array<Point, 3> p;
-    for (auto& x : p) x = Point(normal(rng), normal(rng), normal(rng));
-    assert(PMP::triangle_aspect_ratio(p[0], p[1], p[2]) == PMP::triangle_quality_ilsa(p[0], p[1], p[2]));
-    assert(PMP::triangle_radius_ratio(p[0], p[1], p[2]) == PMP::triangle_radius_ratio_ilsa(p[0], p[1], p[2]));
-    assert(PMP::triangle_mean_ratio(p[0], p[1], p[2]) == PMP::triangle_mean_ratio_ilsa(p[0], p[1], p[2]));
-    assert(PMP::triangle_minimum_angle(p[0], p[1], p[2]) == PMP::triangle_minimum_angle_ilsa(p[0], p[1], p[2]));
-    ++compared;
-  }
-#pragma GCC diagnostic pop
-  std::cout << "deprecated names: " << compared << " triangles, same values as the new names" << std::endl;
-#endif
-}
-
 // A face collapsed in the input may open again only the right way round: the
 // safety check keeps a move that opens both collapsed faces of a vertex with
 // their reference orientation, and drops one that opens either reversed,
@@ -994,7 +936,7 @@ template <class Mesh> void test_minimum_quality_kept() {
   assert(q.mean_aspect_ratio > q0.mean_aspect_ratio);
 }
 
-// ilsa_reject_worsening_moves (default): after one iteration, no vertex's move
+// Worsening moves rejected (the default): after one iteration, no vertex's move
 // lowers the mean aspect ratio of its star, the neighbours being where they
 // ended; with the paper's acceptance some moves do.
 template <class Mesh> void test_worsening_moves_rejected() {
@@ -1030,20 +972,21 @@ template <class Mesh> void test_worsening_moves_rejected() {
   };
   Mesh checked = original, unchecked = original;
   PMP::smooth_surface_mesh_ilsa(checked, CGAL::parameters::number_of_iterations(1));
-  PMP::smooth_surface_mesh_ilsa(unchecked,
-                                CGAL::parameters::number_of_iterations(1).ilsa_reject_worsening_moves(false));
+  smooth_with_changes(
+      unchecked, [](auto& p) { p.reject_worsening = false; }, CGAL::parameters::number_of_iterations(1));
   assert(worsened_stars(checked) == 0);
   assert(worsened_stars(unchecked) > 0);
 }
 
-// The worsening pre-test (user manual, "Worsening pre-test") only tries moves that
+// The worsening pre-test (user manual, "Worsening Moves") only tries moves that
 // were dropped in the previous iteration, only when worsening moves are
 // rejected, and what it drops is counted among the rejected moves.
 template <class Mesh> void test_worsening_pretest() {
   const Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
-  auto run = [&](const auto& np) {
+  auto run = [&](const auto& np, bool reject_worsening = true) {
     Mesh m = original;
-    const auto s = PMP::smooth_surface_mesh_ilsa(m, np);
+    const auto s = smooth_with_changes(
+        m, [reject_worsening](auto& p) { p.reject_worsening = p.reject_worsening && reject_worsening; }, np);
     std::cout << "pre-test: " << s.number_of_moves_dropped_before_projection << " of " << s.number_of_rejected_moves
               << " rejected moves dropped before projection" << std::endl;
     return s;
@@ -1055,13 +998,13 @@ template <class Mesh> void test_worsening_pretest() {
   // Nothing was dropped before the first iteration.
   const auto one = run(CGAL::parameters::number_of_iterations(1));
   assert(one.number_of_rejected_moves > 0 && one.number_of_moves_dropped_before_projection == 0);
-  const auto accepting = run(CGAL::parameters::number_of_iterations(3).ilsa_reject_worsening_moves(false));
+  const auto accepting = run(CGAL::parameters::number_of_iterations(3), false);
   assert(accepting.number_of_rejected_moves > 0 && accepting.number_of_moves_dropped_before_projection == 0);
   const auto unchecked = run(CGAL::parameters::number_of_iterations(3).use_safety_constraints(false));
   assert(unchecked.number_of_rejected_moves == 0 && unchecked.number_of_moves_dropped_before_projection == 0);
 }
 
-// What limits the smoothing (user manual, "What Limits the Smoothing"): the
+// What limits the smoothing (user manual, "Safety Check"): the
 // moves dropped and shortened by the safety check are counted by test, the
 // counts add up to the totals, and each test is counted where it binds and
 // not where it is off.
@@ -1088,10 +1031,10 @@ template <class Mesh> void test_move_limits() {
   assert(tight.moves_shortened_by.fidelity + tight.moves_dropped_by.fidelity >
          defaults.moves_shortened_by.fidelity + defaults.moves_dropped_by.fidelity);
   assert(tight.moves_dropped_by.crease + tight.moves_shortened_by.crease > 0);
-  const auto monotone = run(CGAL::parameters::ilsa_quality_monotone(true));
+  const auto monotone = run(CGAL::parameters::ilsa_quality_floor(0.95));
   assert(monotone.moves_dropped_by.quality_floor + monotone.moves_shortened_by.quality_floor > 0);
   const auto unbounded = run(CGAL::parameters::ilsa_fidelity_tolerance(std::numeric_limits<double>::infinity())
-                                 .ilsa_reject_worsening_moves(false)
+                                 .ilsa_paper_variant(true)
                                  .ilsa_quality_floor(0.));
   const auto &u = unbounded.moves_dropped_by, &v = unbounded.moves_shortened_by;
   assert(u.fidelity + u.crease + u.worsening + u.quality_floor == 0);
@@ -1100,19 +1043,27 @@ template <class Mesh> void test_move_limits() {
   assert(unchecked.moves_dropped_by.total() + unchecked.moves_shortened_by.total() == 0);
 }
 
-// Retrying dropped moves (user manual, "Retrying dropped moves"): a vertex
+// Retrying dropped moves (user manual, "Retrying Dropped Moves"): a vertex
 // whose move the safety check dropped is skipped until its neighbours have
 // moved, also without the worsening test; never in the first iteration, never
-// with ilsa_retry_distance(0) or without the check; on the fandisk the skips
+// with a retry distance of 0 or without the check; on the fandisk the skips
 // cost less than 0.001 of mean q. A drop by the quality floor in a star that
 // was at or above the floor does not settle: on the hemisphere, whose default
 // floor is its input's minimum, every star is, and without the worsening test
 // and the fidelity bound the floor (and the rare flip) is all that drops moves.
 template <class Mesh> void test_retry_distance() {
   const Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
-  auto run = [&](const auto& np, double* mean = nullptr) {
+  // With the retry distance `retry` (of the mean edge length), and worsening moves rejected or not.
+  auto run = [&](const auto& np, double* mean = nullptr, double retry = PMP::internal::ILSA::defaults::retry_distance,
+                 bool reject_worsening = true) {
     Mesh m = original;
-    const auto s = PMP::smooth_surface_mesh_ilsa(m, np);
+    const auto s = smooth_with_changes(
+        m,
+        [=](auto& p) {
+          p.retry_distance = retry;
+          p.reject_worsening = reject_worsening;
+        },
+        np);
     if (mean) *mean = PMP::mesh_quality_ilsa(m).mean_aspect_ratio;
     std::cout << "retry distance: " << s.number_of_settled_skips << " settled skips, " << s.number_of_moves
               << " moves, " << s.number_of_rejected_moves << " rejected in " << s.number_of_iterations << " iterations"
@@ -1121,42 +1072,40 @@ template <class Mesh> void test_retry_distance() {
   };
   double with_skips = 0, without = 0;
   const auto defaults = run(CGAL::parameters::default_values(), &with_skips);
-  const auto every_time = run(CGAL::parameters::ilsa_retry_distance(0.), &without);
+  const auto every_time = run(CGAL::parameters::default_values(), &without, 0.);
   assert(defaults.number_of_settled_skips > 0 && every_time.number_of_settled_skips == 0);
   std::cout << "mean q " << with_skips << " with the skips, " << without << " without" << std::endl;
   assert(with_skips > without - 1e-3);
   // A longer distance keeps vertices settled for longer.
-  const auto far =
-      run(CGAL::parameters::ilsa_retry_distance(1e3).number_of_iterations(6).ilsa_minimum_quality_gain(0.));
-  const auto near =
-      run(CGAL::parameters::ilsa_retry_distance(1e-3).number_of_iterations(6).ilsa_minimum_quality_gain(0.));
+  const auto far = run(CGAL::parameters::number_of_iterations(6).ilsa_minimum_quality_gain(0.), nullptr, 1e3);
+  const auto near = run(CGAL::parameters::number_of_iterations(6).ilsa_minimum_quality_gain(0.), nullptr, 1e-3);
   assert(far.number_of_settled_skips > near.number_of_settled_skips);
   assert(run(CGAL::parameters::number_of_iterations(1)).number_of_settled_skips == 0);
-  assert(run(CGAL::parameters::ilsa_reject_worsening_moves(false).number_of_iterations(4)).number_of_settled_skips > 0);
-  assert(run(CGAL::parameters::ilsa_reject_worsening_moves(false).ilsa_retry_distance(0.).number_of_iterations(4))
-             .number_of_settled_skips == 0);
+  const double retry = PMP::internal::ILSA::defaults::retry_distance;
+  assert(run(CGAL::parameters::number_of_iterations(4), nullptr, retry, false).number_of_settled_skips > 0);
+  assert(run(CGAL::parameters::number_of_iterations(4), nullptr, 0., false).number_of_settled_skips == 0);
   assert(run(CGAL::parameters::use_safety_constraints(false).number_of_iterations(4)).number_of_settled_skips == 0);
 
   Mesh hemisphere = read_mesh<Mesh>(data_file("hemisphere.off"));
-  const auto at_floor = PMP::smooth_surface_mesh_ilsa(
-      hemisphere, CGAL::parameters::ilsa_reject_worsening_moves(false).ilsa_fidelity_tolerance(
-                      std::numeric_limits<double>::infinity()));
+  const auto accept_worsening = [](auto& p) { p.reject_worsening = false; };
+  const auto at_floor = smooth_with_changes(
+      hemisphere, accept_worsening, CGAL::parameters::ilsa_fidelity_tolerance(std::numeric_limits<double>::infinity()));
   std::cout << "hemisphere at its floor: " << at_floor.number_of_rejected_moves << " rejected, "
             << at_floor.number_of_settled_skips << " settled skips" << std::endl;
   assert(at_floor.number_of_rejected_moves > 0 && at_floor.number_of_settled_skips == 0);
   // With a fidelity bound that drops moves (1e-4: the default lets them
   // all pass here), its drops settle vertices.
   hemisphere = read_mesh<Mesh>(data_file("hemisphere.off"));
-  const auto bounded = PMP::smooth_surface_mesh_ilsa(
-      hemisphere, CGAL::parameters::ilsa_reject_worsening_moves(false).ilsa_fidelity_tolerance(1e-4));
+  const auto bounded =
+      smooth_with_changes(hemisphere, accept_worsening, CGAL::parameters::ilsa_fidelity_tolerance(1e-4));
   std::cout << "hemisphere with the fidelity bound: " << bounded.number_of_settled_skips << " settled skips"
             << std::endl;
   assert(bounded.number_of_settled_skips > 0);
 }
 
-// The stops (user manual, "Stopping early"): the run ends after the first
+// The stops (user manual, "Stopping Early"): the run ends after the first
 // iteration whose gain of mean aspect ratio is below ilsa_minimum_quality_gain
-// or, times the iterations left, below ilsa_minimum_remaining_gain; the
+// or, times the iterations left, below the remaining gain (2e-3); the
 // iterations before it passed both. The first k iterations do not depend on
 // the cap, so capped runs without the stops give the mean after each
 // iteration. `remaining_decides`: the mesh is one where the second stop ends
@@ -1167,14 +1116,14 @@ void test_convergence_stop(const std::string& file, double remaining_gain, bool 
   const double minimum_gain = 1e-4, cap = 20;
   Mesh original = read_mesh<Mesh>(data_file(file));
   Mesh m = original;
-  const auto s = PMP::smooth_surface_mesh_ilsa(
-      m, CGAL::parameters::number_of_iterations(unsigned(cap)).ilsa_minimum_remaining_gain(remaining_gain));
+  const auto s = smooth_with_changes(
+      m, [remaining_gain](auto& p) { p.minimum_remaining_gain = remaining_gain; },
+      CGAL::parameters::number_of_iterations(unsigned(cap)));
   const std::size_t ran = s.number_of_iterations;
   auto capped = [&](std::size_t k) {
     Mesh x = original;
-    const auto r = PMP::smooth_surface_mesh_ilsa(x, CGAL::parameters::number_of_iterations(unsigned(k))
-                                                        .ilsa_minimum_quality_gain(0.)
-                                                        .ilsa_minimum_remaining_gain(0.));
+    const auto r = PMP::smooth_surface_mesh_ilsa(
+        x, CGAL::parameters::number_of_iterations(unsigned(k)).ilsa_minimum_quality_gain(0.));
     assert(r.number_of_iterations == k);
     return x;
   };
@@ -1201,8 +1150,7 @@ void test_convergence_stop(const std::string& file, double remaining_gain, bool 
 // the result; returning false stops the run where a shorter run would end.
 template <class Mesh> void test_callback() {
   const Mesh original = read_mesh<Mesh>(data_file("fandisk.off"));
-  const auto np =
-      CGAL::parameters::number_of_iterations(5).ilsa_minimum_quality_gain(0.).ilsa_minimum_remaining_gain(0.);
+  const auto np = CGAL::parameters::number_of_iterations(5).ilsa_minimum_quality_gain(0.);
   Mesh plain = original, watched = original, stopped = original, shorter = original;
   PMP::smooth_surface_mesh_ilsa(plain, np);
   std::vector<double> seen;
@@ -1214,8 +1162,7 @@ template <class Mesh> void test_callback() {
   std::size_t calls = 0;
   const std::function<bool(double)> stop_after_two = [&](double) { return ++calls < 2; };
   const auto t = PMP::smooth_surface_mesh_ilsa(stopped, np.callback(stop_after_two));
-  PMP::smooth_surface_mesh_ilsa(
-      shorter, CGAL::parameters::number_of_iterations(2).ilsa_minimum_quality_gain(0.).ilsa_minimum_remaining_gain(0.));
+  PMP::smooth_surface_mesh_ilsa(shorter, CGAL::parameters::number_of_iterations(2).ilsa_minimum_quality_gain(0.));
   assert(calls == 2 && t.number_of_iterations == 2);
   assert(points_of(stopped) == points_of(shorter) && points_of(stopped) != points_of(plain));
   std::cout << "callback: " << seen.size() << " calls, stopped after " << t.number_of_iterations << std::endl;
@@ -1259,32 +1206,29 @@ void test_documented_defaults() {
     text << in.rdbuf();
     return text.str();
   };
+  // The named parameters, and the constants of the method by their names in the manual's table.
   const std::map<std::string, double> code = {{"number_of_iterations", defaults::number_of_iterations},
                                               {"ilsa_minimum_quality_gain", defaults::minimum_quality_gain},
-                                              {"ilsa_minimum_remaining_gain", defaults::minimum_remaining_gain},
-                                              {"number_of_relaxation_steps", defaults::number_of_relaxation_steps},
-                                              {"ilsa_penalty_steps", defaults::penalty_steps},
-                                              {"ilsa_penalty_gauss_seidel", defaults::penalty_gauss_seidel},
-                                              {"ilsa_tangential_displacement", defaults::tangential_displacement},
-                                              {"ilsa_tangential_sweeps", defaults::tangential_sweeps},
-                                              {"ilsa_relaxation", defaults::relaxation},
-                                              {"ilsa_penalty_relaxation", defaults::penalty_relaxation},
-                                              {"ilsa_penalty_mu", defaults::penalty_mu},
-                                              {"ilsa_length_weight", defaults::length_weight},
-                                              {"ilsa_area_weight", defaults::area_weight},
                                               {"ilsa_feature_angle", defaults::feature_angle},
-                                              {"ilsa_fix_unattached_candidates", defaults::fix_unattached_candidates},
-                                              {"ilsa_crease_contrast", defaults::crease_contrast},
-                                              {"ilsa_minimum_open_crease_edges", defaults::minimum_open_crease_edges},
                                               {"relax_constraints", defaults::relax_constraints},
                                               {"do_project", defaults::do_project},
                                               {"use_safety_constraints", defaults::use_safety_constraints},
                                               {"ilsa_quality_floor", defaults::quality_floor},
-                                              {"ilsa_quality_monotone", defaults::quality_monotone},
-                                              {"ilsa_reject_worsening_moves", defaults::reject_worsening_moves},
                                               {"ilsa_fidelity_tolerance", defaults::fidelity_tolerance},
-                                              {"ilsa_retry_distance", defaults::retry_distance},
-                                              {"ilsa_quality_threshold", defaults::quality_threshold}};
+                                              {"ilsa_paper_variant", defaults::paper_variant},
+                                              {"ilsa_quality_threshold", defaults::quality_threshold},
+                                              {"ilsa_compute_hausdorff_distance", defaults::compute_hausdorff_distance},
+                                              {"max_smooth_iter_num", defaults::number_of_relaxation_steps},
+                                              {"penalty_sweeps", defaults::penalty_steps},
+                                              {"relax1", defaults::relaxation},
+                                              {"relax2", defaults::penalty_relaxation},
+                                              {"mu", defaults::penalty_mu},
+                                              {"wl", defaults::length_weight},
+                                              {"wa", defaults::area_weight},
+                                              {"crease_contrast", defaults::crease_contrast},
+                                              {"minimum_open_crease_edges", defaults::minimum_open_crease_edges},
+                                              {"minimum_remaining_gain", defaults::minimum_remaining_gain},
+                                              {"retry_distance", defaults::retry_distance}};
   std::size_t checked = 0;
   auto expect = [&](const std::string& where, const std::string& name, const std::string& text) {
     const auto found = code.find(name);
@@ -1317,8 +1261,7 @@ void test_documented_defaults() {
   // The quality summaries list their parameters as "- `name` (default `value`)".
   {
     const std::string text = read("include/CGAL/Polygon_mesh_processing/mesh_quality_ilsa.h");
-    for (const std::string name :
-         {"ilsa_quality_threshold", "ilsa_feature_angle", "ilsa_crease_contrast", "ilsa_minimum_open_crease_edges"}) {
+    for (const std::string name : {"ilsa_quality_threshold", "ilsa_feature_angle", "ilsa_compute_hausdorff_distance"}) {
       const std::string key = "`" + name + "` (default `";
       for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
         const std::size_t open = at + key.size();
@@ -1349,24 +1292,8 @@ void test_documented_defaults() {
     const std::string text = read("examples/Polygon_mesh_processing_ILSA/ilsa_smooth.cpp");
     const std::map<std::string, std::string> flags = {{"--iterations", "number_of_iterations"},
                                                       {"--min-gain", "ilsa_minimum_quality_gain"},
-                                                      {"--min-remaining-gain", "ilsa_minimum_remaining_gain"},
-                                                      {"--relaxation-steps", "number_of_relaxation_steps"},
-                                                      {"--penalty-steps", "ilsa_penalty_steps"},
-                                                      {"--gauss-seidel", "ilsa_penalty_gauss_seidel"},
-                                                      {"--tangential", "ilsa_tangential_displacement"},
-                                                      {"--tangential-sweeps", "ilsa_tangential_sweeps"},
-                                                      {"--relax1", "ilsa_relaxation"},
-                                                      {"--relax2", "ilsa_penalty_relaxation"},
-                                                      {"--mu", "ilsa_penalty_mu"},
-                                                      {"--wl", "ilsa_length_weight"},
-                                                      {"--wa", "ilsa_area_weight"},
                                                       {"--feature-angle", "ilsa_feature_angle"},
-                                                      {"--fix-unattached", "ilsa_fix_unattached_candidates"},
-                                                      {"--crease-contrast", "ilsa_crease_contrast"},
-                                                      {"--min-open-crease-edges", "ilsa_minimum_open_crease_edges"},
-                                                      {"--reject-worsening", "ilsa_reject_worsening_moves"},
-                                                      {"--fidelity-tolerance", "ilsa_fidelity_tolerance"},
-                                                      {"--retry-distance", "ilsa_retry_distance"}};
+                                                      {"--fidelity-tolerance", "ilsa_fidelity_tolerance"}};
     for (const auto& [flag, name] : flags) {
       const std::size_t at = text.find("\"  " + flag + " ");
       assert(at != std::string::npos);
@@ -1381,7 +1308,7 @@ void test_documented_defaults() {
   std::cout << "documented defaults: " << checked << " statements agree with internal/ILSA/defaults.h (reference "
             << smoother << " + " << classification << " + " << quality << ", manual " << manual << ", tool " << tool
             << ")" << std::endl;
-  assert(smoother >= 20 && classification >= 4 && quality >= 4 && manual >= 20 && tool == 20);
+  assert(smoother >= 9 && classification >= 3 && quality >= 3 && manual >= 17 && tool == 4);
 }
 
 // `geom_traits`, as every CGAL PMP function takes it: a Surface_mesh of
@@ -1436,7 +1363,7 @@ int main() {
   test_fandisk<Polyhedron>();
   test_sphere<Surface_mesh>();
   test_sphere<Polyhedron>();
-  test_sweep_parameters();
+  test_smoothing_parameters();
   test_tangential_displacement<Surface_mesh>();
   test_tangential_displacement<Polyhedron>();
   test_mesh_types_agree();
@@ -1449,7 +1376,6 @@ int main() {
   test_degenerate_reference<Surface_mesh>();
   test_degenerate_reference<Polyhedron>();
   test_inlined_aspect_ratio();
-  test_deprecated_names();
   test_move_limits<Surface_mesh>();
   test_move_limits<Polyhedron>();
   test_collapsed_faces_open_right_way<Surface_mesh>();

@@ -29,18 +29,21 @@ namespace Polygon_mesh_processing {
  * ridge candidate when the least-squares normal `x` of its star (`A x = 1`,
  * rows of `A` the unit normals of the incident faces) is longer than
  * `1 / cos(θ / 2)`; an edge between two candidates whose face normals make an
- * angle larger than `θ` is sharp; a candidate with two sharp edges is a
- * ridge vertex, with one or more than two a corner, with none a corner or a
- * smooth vertex (`ilsa_fix_unattached_candidates`). A vertex with two sharp
- * edges where the crease turns by more than `ilsa_crease_kink_angle` is a
- * corner too (a kink). With a crease contrast `c` > 0 (`ilsa_crease_contrast`),
- * such an edge is sharp only if its angle is at least `c` times that of the
- * flatter of the two other edges of each of its faces. With a minimum `n` > 1
- * (`ilsa_minimum_open_crease_edges`), a connected set of fewer than `n` such
- * edges that has an end (a vertex with one of them only) is curvature, not a
- * crease line: none of its edges is sharp. A candidate left with fewer than two
- * sharp edges by these two rules is a smooth vertex. Isolated and
- * non-manifold vertices are corners.
+ * angle larger than `θ` is sharp; a candidate with two sharp edges is a ridge
+ * vertex, with one or more than two a corner. Isolated and non-manifold
+ * vertices are corners. Where the paper leaves curvature of coarse organic
+ * meshes to be taken for creases, three rules of the package apply (user
+ * manual, "Decisions That Differ from the Paper"; `ilsa_paper_variant(true)`
+ * turns them off):
+ * - crease contrast: such an edge is sharp only if its angle is at least 5
+ *   times that of the flatter of the two other edges of each of its faces;
+ * - open crease lines: a connected set of fewer than 20 such edges that has
+ *   an end (a vertex with one of them only) is curvature, not a crease line;
+ *   a candidate left with fewer than two sharp edges by these two rules is
+ *   a smooth vertex;
+ * - a candidate without sharp edge is a smooth vertex (the paper fixes it as
+ *   a corner), and a vertex with two sharp edges where the crease turns by
+ *   more than `θ` is a corner (a kink, counted in `number_of_kink_vertices`).
  *
  * @tparam TriangleMesh a model of `VertexListGraph`, `EdgeListGraph`, `FaceListGraph` and `HalfedgeGraph`
  * @tparam VertexTypeMap a model of `WritablePropertyMap` with `vertex_descriptor` as key and
@@ -57,43 +60,20 @@ namespace Polygon_mesh_processing {
  *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `%Point_3` as value}
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
  *   \cgalParamNEnd
- *   \cgalParamNBegin{vertex_index_map, face_index_map}
- *     \cgalParamDescription{as in `smooth_surface_mesh_ilsa()`}
- *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_feature_angle}
  *     \cgalParamDescription{an edge is sharp when the normals of its two faces make an angle larger than this, in
  * degrees (CGAL's convention, as in `detect_sharp_edges()`)} \cgalParamType{`double`, in [0, 180)}
  * \cgalParamDefault{`20` (the paper's dihedral θ_f = 8π/9)} \cgalParamNEnd
- *   \cgalParamNBegin{ilsa_fix_unattached_candidates}
- *     \cgalParamDescription{whether a ridge candidate with no sharp edge is a corner (the paper's rule) or a smooth
- * vertex} \cgalParamType{`bool`} \cgalParamDefault{`false`} \cgalParamNEnd
- *   \cgalParamNBegin{ilsa_crease_contrast}
- *     \cgalParamDescription{an edge whose face normals are more than `ilsa_feature_angle` apart is sharp only if
- * their angle is at least this many times that of the flatter of the two other edges of each of its faces: on a
- * crease of a CAD model one of these lies in a smooth part, on a coarse curved surface they bend as much as the edge
- * (user manual, "Crease contrast"; not in the paper). `0` makes every such edge between two ridge candidates sharp,
- * the paper's rule. Ignored with an `edge_is_constrained_map`}
- *     \cgalParamType{`double`, non-negative and finite}
- *     \cgalParamDefault{`5`}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{ilsa_minimum_open_crease_edges}
- *     \cgalParamDescription{a connected set of edges beyond `ilsa_feature_angle` (kept by the crease contrast) that has
- * an end and fewer edges than this is curvature, not a crease line: none of its edges is sharp (user manual, "Open
- * Crease Lines"; not in the paper). `0` keeps every such set, the paper's rule. Ignored with an
- * `edge_is_constrained_map`}
- *     \cgalParamType{an integer, in [0, 1e9]}
- *     \cgalParamDefault{`20`}
- *   \cgalParamNEnd
- *   \cgalParamNBegin{ilsa_crease_kink_angle}
- *     \cgalParamDescription{a vertex with two sharp edges where the crease turns by more than this angle (degrees) is a
- * corner, counted in `number_of_kink_vertices`; `180`: the paper's rule}
- *     \cgalParamType{`double`, in [0, 180]} \cgalParamDefault{`ilsa_feature_angle`}
+ *   \cgalParamNBegin{ilsa_paper_variant}
+ *     \cgalParamDescription{if `true`, the paper's rules: every edge beyond the feature angle between two
+ * candidates is sharp, a candidate without sharp edge is a corner, no kink rule}
+ *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_is_constrained_map}
  *     \cgalParamDescription{a property map telling which vertices are fixed; they are reported as corners (boundary
  * vertices stay boundary)} \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool`
  * as value} \cgalParamDefault{no vertex is constrained} \cgalParamNEnd \cgalParamNBegin{edge_is_constrained_map}
- *     \cgalParamDescription{when given, these edges are the sharp edges, replacing the detection: with
+ *     \cgalParamDescription{when given, these edges are the sharp edges, replacing the detection and its rules: with
  * `relax_constraints(true)`, a vertex with two constrained edges is a ridge vertex, with one or more than two a
  * corner, with none a smooth vertex; by default every end of a constrained edge is a corner}
  *     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}

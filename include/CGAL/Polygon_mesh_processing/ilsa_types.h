@@ -60,11 +60,11 @@ public:
 /// \ingroup PkgPMPILSARef
 /// Moves of a call of `smooth_surface_mesh_ilsa()` counted by the test of the
 /// safety check that limited them: the last test a move failed in its
-/// iteration (user manual, "What Limits the Smoothing").
+/// iteration (user manual, "Safety Check").
 struct ILSA_move_limits {
   std::size_t flip_or_collapse = 0; ///< a triangle around the vertex would invert or collapse
   std::size_t quality_floor = 0;    ///< the worst triangle of the star would get worse below the quality floor
-  std::size_t worsening = 0;        ///< the mean aspect ratio of the star would drop (`ilsa_reject_worsening_moves`)
+  std::size_t worsening = 0;        ///< the mean aspect ratio of the star would drop (user manual, "Worsening Moves")
   std::size_t fidelity = 0;         ///< the surface would move farther than the fidelity tolerance from the input
   std::size_t crease = 0;           ///< a feature line would move farther than the fidelity tolerance from the input's
 
@@ -92,19 +92,19 @@ struct ILSA_statistics {
   std::size_t number_of_moves = 0;           ///< accepted vertex moves, summed over the iterations
   std::size_t number_of_shortened_moves = 0; ///< moves accepted only after being shortened by the safety check
   std::size_t number_of_rejected_moves = 0;  ///< moves dropped by the safety check
-  /// those of them dropped by its worsening pre-test, before projection (user manual, "Worsening pre-test")
+  /// those of them dropped by its worsening pre-test, before projection (user manual, "Worsening Moves")
   std::size_t number_of_moves_dropped_before_projection = 0;
   std::size_t number_of_guarded_projections = 0; ///< projections the sheet guard kept local
   /// iterations in which a vertex whose move the safety check dropped (but for the quality floor in a star at or above
-  /// it) was left where it was, untested, its neighbours having moved too little since (user manual, "Retrying
-  /// dropped moves"); neither moves nor rejected moves
+  /// it) was left where it was, untested, its neighbours having moved too little since (user manual, "Retrying Dropped
+  /// Moves"); neither moves nor rejected moves
   std::size_t number_of_settled_skips = 0;
   /// the moves the safety check dropped after projection (`number_of_rejected_moves` less those dropped before
   /// projection), by the test that dropped them
   ILSA_move_limits moves_dropped_by;
   ILSA_move_limits moves_shortened_by; ///< the shortened moves, by the test that shortened them last
   /// an upper bound of the Hausdorff distance (both ways) between the smoothed and the input surface, certified by
-  /// the safety check (user manual, "Fidelity certificate"), relative to the bounding-box diagonal like
+  /// the safety check (user manual, "Fidelity Certificate"), relative to the bounding-box diagonal like
   /// `ilsa_fidelity_tolerance`: at most the tolerance; infinity when no bound is enforced (an infinite tolerance,
   /// `use_safety_constraints(false)` or `do_project(false)`)
   double certified_distance = 0;

@@ -9,6 +9,6 @@
 
 /// \ingroup PkgPMPILSARef
 /// Version of the package, "major.minor.patch".
-#define CGAL_PMP_ILSA_VERSION "1.0.0"
+#define CGAL_PMP_ILSA_VERSION "2.0.0"
 
 #endif // CGAL_POLYGON_MESH_PROCESSING_ILSA_VERSION_H

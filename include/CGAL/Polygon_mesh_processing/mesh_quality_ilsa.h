@@ -15,8 +15,9 @@
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/feature_lines.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/read_parameters.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/set_up.h>
 #include <CGAL/Random.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
@@ -36,7 +37,6 @@
 #include <cstddef>
 #include <iterator>
 #include <limits>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -61,11 +61,12 @@ struct ILSA_quality_summary {
 /// Quality summary over the faces `face_range` of the triangle mesh `tm`.
 /// Named parameters, in any order:
 /// - `vertex_point_map` (default `get_const_property_map(CGAL::vertex_point, tm)`);
-/// - `ilsa_quality_threshold` (default `0.3`): the aspect ratio under which a
-///   face counts as poor in `share_below_threshold`.
+/// - `ilsa_quality_threshold` (default `0.3`, in [0, 1]): the aspect ratio
+///   under which a face counts as poor in `share_below_threshold`.
 ///
 /// @throws ILSA_error for a face of the range that is not a triangle or has a
-///         non-finite coordinate, as `smooth_surface_mesh_ilsa()` does.
+///         non-finite coordinate, as `smooth_surface_mesh_ilsa()` does, and
+///         for a threshold out of range.
 template <class FaceRange, class TriangleMesh, class NamedParameters = parameters::Default_named_parameters,
           typename = std::enable_if_t<!internal::ILSA::is_named_parameters<TriangleMesh>::value>>
 ILSA_quality_summary mesh_quality_ilsa(const FaceRange& face_range, const TriangleMesh& tm,
@@ -74,8 +75,7 @@ ILSA_quality_summary mesh_quality_ilsa(const FaceRange& face_range, const Triang
   using parameters::get_parameter;
   const auto vpm =
       choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-  const double threshold = choose_parameter(get_parameter(np, internal_np::ilsa_quality_threshold),
-                                            internal::ILSA::defaults::quality_threshold);
+  const double threshold = internal::ILSA::read_quality_threshold(np);
 
   ILSA_quality_summary s;
   s.threshold = threshold;
@@ -146,9 +146,9 @@ struct ILSA_fidelity_summary {
   double hausdorff_error = 0; ///< the error bound of `hausdorff_distance`: 1e-5 (of the diagonal)
   bool closed = false;
   double volume_change = 0;              ///< (V_smoothed - V_original) / V_original, closed meshes only
-  std::size_t number_of_sharp_edges = 0; ///< crease edges: sharp edges of the original (face normals more than the
-                                         ///< feature angle apart, kept by the crease contrast when one is given,
-                                         ///< not in a short open set), or the constrained edges when a map is given
+  std::size_t number_of_sharp_edges = 0; ///< feature lines: the edges of the original that the smoother's crease
+                                         ///< bound holds (the feature edges of `classify_vertices_ilsa()`: beyond
+                                         ///< the feature angle and kept by its rules), or the constrained edges
   /// Two-sided distance between the original's crease edges and the same edges of the smoothed mesh: every edge of
   /// either polyline is sampled (ends and seven inner points) and each sample is measured against the whole other
   /// polyline. A crease cut short (an original point far from the smoothed crease) and a crease bent away from the
@@ -166,7 +166,6 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Segments = std::vector<Kernel::Segment_3>;
-using Vertex_pairs = std::set<std::pair<std::size_t, std::size_t>>; // (lower, higher) vertex of each edge
 
 inline Kernel::Vector_3 face_normal(const Mesh& m, Mesh::Face_index f) {
   const auto h = halfedge(f, m);
@@ -203,81 +202,6 @@ inline double hausdorff_distance(const Mesh& a, const Mesh& b, double diagonal) 
   return bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, hausdorff_error * diagonal) / diagonal;
 }
 
-// The edges of `original` that `edge_is_constrained_map` marks, as ordered
-// pairs of vertices of its copy (`copied` maps the vertices).
-template <class TriangleMesh, class NamedParameters, class Copied>
-Vertex_pairs constrained_edges(const TriangleMesh& original, const NamedParameters& np, const Copied& copied) {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using GT = boost::graph_traits<TriangleMesh>;
-  const auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
-                                    Static_boolean_property_map<typename GT::edge_descriptor, false>());
-  boost::unordered_map<typename GT::vertex_descriptor, std::size_t> position;
-  for (const auto& c : copied) position.emplace(c.first, std::size_t(c.second));
-  Vertex_pairs constrained;
-  for (auto e : edges(original))
-    if (get(ecm, e)) {
-      const std::size_t i = position.at(source(e, original)), j = position.at(target(e, original));
-      constrained.emplace((std::min)(i, j), (std::max)(i, j));
-    }
-  return constrained;
-}
-
-// The crease edges of `a` (the constrained ones when `user_creases`, else the
-// sharp ones: face normals more than the feature angle apart, with a crease
-// `contrast` above 0 kept by keeps_crease_contrast(), and not in an open set
-// of fewer than `minimum_open_edges`, drop_short_open_lines()), and the same
-// edges with the points `pb` (not the smoothed mesh's own sharp edges: an edge
-// near the threshold could change side).
-inline std::pair<Segments, Segments> crease_edges(const Mesh& a, const std::vector<Point>& pb, bool user_creases,
-                                                  const Vertex_pairs& constrained, double feature_angle,
-                                                  double contrast, std::size_t minimum_open_edges) {
-  const double sharp_cosine = feature_cosine(feature_angle);
-  // The cosine of the angle between the face normals of each edge; 1 (flat)
-  // on the border and next to a degenerate face, whose normal is zero.
-  std::vector<double> cosine(num_edges(a), 1.);
-  if (!user_creases)
-    for (auto e : edges(a)) {
-      const auto h = halfedge(e, a);
-      if (is_border_edge(h, a)) continue;
-      auto n0 = face_normal(a, face(h, a)), n1 = face_normal(a, face(opposite(h, a), a));
-      const double l = std::sqrt(n0.squared_length() * n1.squared_length());
-      if (l != 0) cosine[std::size_t(e)] = n0 * n1 / l;
-    }
-  auto angle = [&](Mesh::Halfedge_index h) { return normal_angle(cosine[std::size_t(edge(h, a))]); };
-  // The angle of the flatter of the two edges of the face of `h` other than `h`'s.
-  auto flatter = [&](Mesh::Halfedge_index h) { return (std::min)(angle(next(h, a)), angle(prev(h, a))); };
-  auto ends = [&a](std::size_t e) {
-    const auto h = halfedge(Mesh::Edge_index(Mesh::size_type(e)), a);
-    return std::array<std::size_t, 2>{std::size_t(source(h, a)), std::size_t(target(h, a))};
-  };
-  std::vector<unsigned char> crease(num_edges(a), 0);
-  for (auto e : edges(a)) {
-    const auto h = halfedge(e, a);
-    if (user_creases) {
-      const auto ab = ends(std::size_t(e));
-      crease[std::size_t(e)] = constrained.count({(std::min)(ab[0], ab[1]), (std::max)(ab[0], ab[1])}) > 0;
-    } else
-      crease[std::size_t(e)] =
-          cosine[std::size_t(e)] < sharp_cosine &&
-          (!(contrast > 0) || keeps_crease_contrast(angle(h), flatter(h), flatter(opposite(h, a)), contrast));
-  }
-  if (!user_creases)
-    drop_short_open_lines(
-        num_vertices(a), ends,
-        [&a](std::size_t v) { return bool(CGAL::is_border(Mesh::Vertex_index(Mesh::size_type(v)), a)); }, crease,
-        minimum_open_edges);
-  std::pair<Segments, Segments> creases;
-  for (auto e : edges(a)) {
-    if (!crease[std::size_t(e)]) continue;
-    const auto ab = ends(std::size_t(e));
-    creases.first.emplace_back(a.point(Mesh::Vertex_index(Mesh::size_type(ab[0]))),
-                               a.point(Mesh::Vertex_index(Mesh::size_type(ab[1]))));
-    creases.second.emplace_back(pb[ab[0]], pb[ab[1]]);
-  }
-  return creases;
-}
-
 // Two-sided distance between the two crease polylines: every edge of either
 // is sampled (ends and crease_samples - 1 inner points), each sample measured
 // against the whole other polyline.
@@ -311,19 +235,12 @@ inline void crease_deviation(const Segments& original_crease, const Segments& sm
 /// Compares `smoothed` with `original`, which must have the same vertices and
 /// faces in the same order (as `smooth_surface_mesh_ilsa()` leaves them).
 /// Named parameters:
-/// - `ilsa_feature_angle` (default `20`): an edge of `original` is sharp when the
-///   normals of its two faces make a larger angle, in degrees (CGAL's convention,
-///   as in `detect_sharp_edges()`); the crease deviation compares these edges;
-/// - `ilsa_crease_contrast` (default `5`, the smoother's): with a contrast above
-///   0, only the sharp edges that keep it, as in `smooth_surface_mesh_ilsa()`
-///   (user manual, "Crease contrast"); pass the smoother's value to measure its
-///   crease lines, `0` to measure every edge beyond the feature angle;
-/// - `ilsa_minimum_open_crease_edges` (default `20`, the smoother's): the
-///   crease edges leave out every connected set of fewer edges that has an
-///   end, as in `smooth_surface_mesh_ilsa()` (user manual, "Open Crease
-///   Lines"); `0` keeps them;
-/// - `edge_is_constrained_map`: a map from the edges of `original` to `bool`;
-///   when given, its edges are the crease edges instead of the sharp ones;
+/// - `ilsa_feature_angle` (default `20`), `ilsa_paper_variant` (default
+///   `false`) and `edge_is_constrained_map` (a map from the edges of
+///   `original` to `bool`), as given to the smoother: the crease deviation
+///   compares the feature lines of `original` that the smoother keeps (the
+///   feature edges of `classify_vertices_ilsa()`, or the constrained edges)
+///   with the same edges of `smoothed`;
 /// - `ilsa_compute_hausdorff_distance` (default `true`): `false` skips the
 ///   Hausdorff distance (`hausdorff_distance` is then NaN), the costly part on
 ///   large meshes (CGAL's bounded-error distance, certified to 1e-5 of the
@@ -334,16 +251,8 @@ inline void crease_deviation(const Segments& original_crease, const Segments& sm
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const TriangleMesh& smoothed,
                                          const NamedParameters& np = parameters::default_values()) {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   namespace fidelity = internal::ILSA::fidelity;
-  const double feature_angle =
-      choose_parameter(get_parameter(np, internal_np::ilsa_feature_angle), internal::ILSA::defaults::feature_angle);
-  const bool with_hausdorff = choose_parameter(get_parameter(np, internal_np::ilsa_compute_hausdorff_distance), true);
-  const double contrast =
-      choose_parameter(get_parameter(np, internal_np::ilsa_crease_contrast), internal::ILSA::defaults::crease_contrast);
-  const auto minimum_open_edges = choose_parameter(get_parameter(np, internal_np::ilsa_minimum_open_crease_edges),
-                                                   internal::ILSA::defaults::minimum_open_crease_edges);
+  const bool with_hausdorff = internal::ILSA::read_compute_hausdorff_distance(np);
   ILSA_fidelity_summary r;
 
   // Plain double copies; both are made the same way, so their vertices and
@@ -380,11 +289,20 @@ ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const Tri
     r.volume_change = va != 0 ? (vb - va) / std::abs(va) : 0.;
   }
 
-  constexpr bool user_creases =
-      !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_constrained_t>::value;
-  const auto creases = fidelity::crease_edges(
-      a, pb, user_creases, user_creases ? fidelity::constrained_edges(original, np, copied) : fidelity::Vertex_pairs(),
-      feature_angle, contrast, double(minimum_open_edges) > 0 ? std::size_t(minimum_open_edges) : 0);
+  // The feature lines, by the smoother's own classification of `original`.
+  internal::ILSA::Set_up_incidences incidences;
+  const auto flat = internal::ILSA::classified_flat_copy(original, get_const_property_map(CGAL::vertex_point, original),
+                                                         np, incidences);
+  boost::unordered_map<vertex_descriptor, std::size_t> index_in_a;
+  for (const auto& c : copied) index_in_a.emplace(c.first, std::size_t(c.second));
+  std::pair<fidelity::Segments, fidelity::Segments> creases;
+  for (std::size_t e = 0; e < flat.mesh.edges.size(); ++e) {
+    if (!flat.classification.feature_edge[e]) continue;
+    const std::size_t i = index_in_a.at(flat.vertices[flat.mesh.edges[e][0]]);
+    const std::size_t j = index_in_a.at(flat.vertices[flat.mesh.edges[e][1]]);
+    creases.first.emplace_back(pa[i], pa[j]);
+    creases.second.emplace_back(pb[i], pb[j]);
+  }
   r.number_of_sharp_edges = creases.first.size();
   if (!creases.first.empty()) fidelity::crease_deviation(creases.first, creases.second, scale, r);
   return r;

@@ -124,25 +124,6 @@ template <class P> double triangle_minimum_angle_ilsa(const P& p0, const P& p1, 
   return s.double_area > 0 ? s.smallest_angle_degrees : 0.;
 }
 
-#ifndef CGAL_NO_DEPRECATED_CODE
-/// \cond SKIP_IN_MANUAL
-// The names of version 1.0.0, kept for one version (user manual, "Names").
-// `triangle_aspect_ratio` stood beside CGAL's `face_aspect_ratio()`, whose
-// value grows as the triangle gets worse.
-#define CGAL_ILSA_DEPRECATED_MEASURE(old_name, new_name)                                                               \
-  template <class P>                                                                                                   \
-  CGAL_DEPRECATED_MSG("use " #new_name "()")                                                                           \
-  double old_name(const P& p0, const P& p1, const P& p2) {                                                             \
-    return new_name(p0, p1, p2);                                                                                       \
-  }
-CGAL_ILSA_DEPRECATED_MEASURE(triangle_aspect_ratio, triangle_quality_ilsa)
-CGAL_ILSA_DEPRECATED_MEASURE(triangle_radius_ratio, triangle_radius_ratio_ilsa)
-CGAL_ILSA_DEPRECATED_MEASURE(triangle_mean_ratio, triangle_mean_ratio_ilsa)
-CGAL_ILSA_DEPRECATED_MEASURE(triangle_minimum_angle, triangle_minimum_angle_ilsa)
-#undef CGAL_ILSA_DEPRECATED_MEASURE
-/// \endcond
-#endif // CGAL_NO_DEPRECATED_CODE
-
 } // namespace Polygon_mesh_processing
 } // namespace CGAL
 

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Extends CGAL's list of named parameters with the tags of the ILSA smoother, so
-// that `CGAL::parameters::number_of_iterations(5).ilsa_penalty_mu(0.1)` and
-// `CGAL::parameters::ilsa_penalty_mu(0.1).number_of_iterations(5)` both chain.
+// that `CGAL::parameters::number_of_iterations(5).ilsa_quality_floor(0.4)` and
+// `CGAL::parameters::ilsa_quality_floor(0.4).number_of_iterations(5)` both chain.
 //
 // CGAL includes this list several times, each time with another definition of
 // `CGAL_add_named_parameter` (enum tags, member functions, free functions), so
@@ -27,27 +27,11 @@
 
 // ILSA parameters (see smooth_surface_mesh_ilsa.h for their meaning)
 // clang-format off
-CGAL_add_named_parameter(ilsa_relaxation_t, ilsa_relaxation, ilsa_relaxation)
-CGAL_add_named_parameter(ilsa_penalty_relaxation_t, ilsa_penalty_relaxation, ilsa_penalty_relaxation)
-CGAL_add_named_parameter(ilsa_penalty_steps_t, ilsa_penalty_steps, ilsa_penalty_steps)
-CGAL_add_named_parameter(ilsa_penalty_gauss_seidel_t, ilsa_penalty_gauss_seidel, ilsa_penalty_gauss_seidel)
-CGAL_add_named_parameter(ilsa_tangential_displacement_t, ilsa_tangential_displacement, ilsa_tangential_displacement)
-CGAL_add_named_parameter(ilsa_tangential_sweeps_t, ilsa_tangential_sweeps, ilsa_tangential_sweeps)
-CGAL_add_named_parameter(ilsa_penalty_mu_t, ilsa_penalty_mu, ilsa_penalty_mu)
-CGAL_add_named_parameter(ilsa_length_weight_t, ilsa_length_weight, ilsa_length_weight)
-CGAL_add_named_parameter(ilsa_area_weight_t, ilsa_area_weight, ilsa_area_weight)
 CGAL_add_named_parameter(ilsa_feature_angle_t, ilsa_feature_angle, ilsa_feature_angle)
-CGAL_add_named_parameter(ilsa_fix_unattached_candidates_t, ilsa_fix_unattached_candidates, ilsa_fix_unattached_candidates)
-CGAL_add_named_parameter(ilsa_crease_kink_angle_t, ilsa_crease_kink_angle, ilsa_crease_kink_angle)
-CGAL_add_named_parameter(ilsa_crease_contrast_t, ilsa_crease_contrast, ilsa_crease_contrast)
-CGAL_add_named_parameter(ilsa_minimum_open_crease_edges_t, ilsa_minimum_open_crease_edges, ilsa_minimum_open_crease_edges)
 CGAL_add_named_parameter(ilsa_minimum_quality_gain_t, ilsa_minimum_quality_gain, ilsa_minimum_quality_gain)
-CGAL_add_named_parameter(ilsa_minimum_remaining_gain_t, ilsa_minimum_remaining_gain, ilsa_minimum_remaining_gain)
-CGAL_add_named_parameter(ilsa_retry_distance_t, ilsa_retry_distance, ilsa_retry_distance)
 CGAL_add_named_parameter(ilsa_quality_floor_t, ilsa_quality_floor, ilsa_quality_floor)
 CGAL_add_named_parameter(ilsa_fidelity_tolerance_t, ilsa_fidelity_tolerance, ilsa_fidelity_tolerance)
-CGAL_add_named_parameter(ilsa_quality_monotone_t, ilsa_quality_monotone, ilsa_quality_monotone)
-CGAL_add_named_parameter(ilsa_reject_worsening_moves_t, ilsa_reject_worsening_moves, ilsa_reject_worsening_moves)
+CGAL_add_named_parameter(ilsa_paper_variant_t, ilsa_paper_variant, ilsa_paper_variant)
 CGAL_add_named_parameter(ilsa_quality_threshold_t, ilsa_quality_threshold, ilsa_quality_threshold)
 CGAL_add_named_parameter(ilsa_compute_hausdorff_distance_t, ilsa_compute_hausdorff_distance, ilsa_compute_hausdorff_distance)
 // clang-format on

@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The AABB tree types of the package, for every supported CGAL (user manual,
-// "Supported CGAL Versions"). CGAL 6.0 renamed the 3D traits and primitives
+// "Supported CGAL Versions and Compilers"). CGAL 6.0 renamed the 3D traits and primitives
 // `AABB_traits_3`, `AABB_segment_primitive_3` and `AABB_triangle_primitive_3`;
-// the old names are deprecated there (a warning in every translation unit) and
-// gone with `CGAL_NO_DEPRECATED_CODE`. This header is the only place that
+// the old names warn in every translation unit there and are gone when CGAL's
+// old code is switched off. This header is the only place that
 // chooses between the two spellings: the package, its programs and its tests
 // name the aliases below.
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The crease bound (`ilsa_fidelity_tolerance` along the feature lines; user
-// manual, "Crease bound"): every point of every smoothed feature edge lies
+// manual, "Fidelity Certificate"): every point of every smoothed feature edge lies
 // within the tolerance of its input line, and every point of every input
 // feature edge within the tolerance of the smoothed line. The feature lines
 // are the crease polylines (the sharp edges, or the user's constrained

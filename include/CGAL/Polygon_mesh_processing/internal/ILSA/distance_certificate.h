@@ -1,9 +1,8 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Certified one-sided distances, without sampling (user manual, "Fidelity
-// certificate"): an upper bound of the largest distance from the points of a
-// triangle (or a segment) to a union of triangles (or segments).
+// Certified one-sided distances, without sampling (user manual, "Fidelity Certificate"): an upper bound of the largest
+// distance from the points of a triangle (or a segment) to a union of triangles (or segments).
 //
 // The distance to one convex set is a convex function, so over a convex piece
 // of the triangle it is largest at a vertex of the piece. The triangle is cut

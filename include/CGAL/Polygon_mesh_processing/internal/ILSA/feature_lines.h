@@ -1,10 +1,10 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The rules of the feature lines that the smoother and the fidelity summary
-// (mesh_fidelity_ilsa()) must apply alike: when an edge is a feature edge
-// (feature angle, crease contrast, open crease lines), and at which points a
-// feature edge is measured (user manual, "Crease fidelity").
+// The rules of the feature lines: when an edge is a feature edge (feature
+// angle, crease contrast, open crease lines), and at which points the
+// fidelity summary measures one. The classification applies them; the
+// fidelity summary (mesh_fidelity_ilsa()) takes its feature edges from it.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FEATURE_LINES_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FEATURE_LINES_H
@@ -39,14 +39,12 @@ inline double normal_angle(double cosine) {
   return std::acos((std::max)(-1., (std::min)(1., cosine)));
 }
 
-/// The crease contrast (user manual, "Crease contrast"): whether a feature
+/// The crease contrast (user manual, "Crease Contrast"): whether a feature
 /// edge whose face normals make the angle `angle` stays a crease line with the
 /// contrast `contrast`, `flatter0` and `flatter1` being the angles of the
 /// flatter of the two other edges of each of its faces. On a crease of a CAD
 /// model at least one of these lies in a smooth part of the surface; on a
-/// coarse curved surface they bend as much as the edge. The classification
-/// (sharp and feature edges, hence the crease bound of the safety check) and
-/// mesh_fidelity_ilsa() (the crease deviation) both decide by this test.
+/// coarse curved surface they bend as much as the edge.
 inline bool keeps_crease_contrast(double angle, double flatter0, double flatter1, double contrast) {
   return !(angle < contrast * (std::max)(flatter0, flatter1));
 }

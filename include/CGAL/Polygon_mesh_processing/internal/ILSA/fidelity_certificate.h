@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The fidelity certificate (`ilsa_fidelity_tolerance`; user manual,
-// "Fidelity certificate"): every point of every smoothed face lies within the
+// "Fidelity Certificate"): every point of every smoothed face lies within the
 // tolerance of the input surface, and every point of every input face within
 // the tolerance of the smoothed surface. Each face is bounded as a whole
 // (distance_certificate.h), in both directions:

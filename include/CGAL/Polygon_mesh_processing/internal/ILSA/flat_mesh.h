@@ -151,11 +151,6 @@ inline float float_rounded_down(double x) {
   return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
 }
 
-/// Frees the storage of `v` (`clear()` keeps it).
-template <class T> void release(std::vector<T>& v) {
-  std::vector<T>().swap(v);
-}
-
 /// Unit normal of triangle `f`, or zero for a degenerate triangle.
 inline Vec3 unit_normal(const std::vector<Vec3>& pos, const std::array<Index, 3>& f) {
   const Vec3 n = area_vector(pos, f);

@@ -3,8 +3,8 @@
 //
 // The global loop of ILSA (the paper's Algo. 1) on the flat copy: each
 // iteration computes the displacements (Algo. 2 and 3), projects the moved
-// vertices onto the input (user manual, "Projection guard"), applies the
-// safety check, and tests the stops (user manual, "Stopping early").
+// vertices onto the input (user manual, "Projection Guard"), applies the
+// safety check, and tests the stops (user manual, "Stopping Early").
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_GLOBAL_LOOP_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_GLOBAL_LOOP_H
@@ -16,16 +16,13 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/move_safety.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/penalty_adjustment.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/projection.h>
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/smoothing_parameters.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
-
-#include <CGAL/Real_timer.h>
 
 #include <algorithm>
 #include <cstddef>
-#include <iostream>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -66,7 +63,6 @@ public:
     // Its weights' array, idle during the penalty step, holds the step's
     // targets (three doubles per vertex): one allocation for both.
     workspace_.weights.reserve((std::max)(m_.edges.size(), 3 * pos_.size()));
-    if (penalty_.gauss_seidel) colours_ = colour_vertices(m_, nb_.smooth);
     limit_retries_ = p_.use_safety && p_.retry_distance > 0;
     retry_length_ = p_.retry_distance * mean_edge_length;
     if (limit_retries_) settled_.assign(pos_.size(), -1.f);
@@ -75,28 +71,20 @@ public:
   /// Runs the iterations until `parameters.iterations`, a stop or the callback ends them.
   void run(ILSA_statistics& stats) {
     double mean_q = p_.may_stop() ? mean_quality() : 0.;
-    CGAL::Real_timer timer;
     for (std::size_t step = 0; step < p_.iterations; ++step) {
-      timer.reset();
-      timer.start();
       iterate(stats);
-      timer.stop();
-      if (p_.verbose)
-        std::cerr << "ILSA iteration " << step + 1 << ": " << moved_.size() << " moves, "
-                  << stats.number_of_shortened_moves << " shortened and " << stats.number_of_rejected_moves
-                  << " rejected so far (" << timer.time() << " s)\n";
       if (p_.callback && !p_.callback(double(step + 1) / double(p_.iterations))) break;
       if (p_.may_stop()) {
         // Stop on a small gain of this iteration, or when this gain times the
         // iterations left (what they could still add while the gains shrink
-        // from one iteration to the next) is small (user manual, "Stopping early").
+        // from one iteration to the next) is small (user manual, "Stopping Early").
         const double before = mean_q;
         mean_q = mean_quality();
         const double gain = mean_q - before, left = double(p_.iterations) - double(step + 1);
         if (gain < p_.minimum_gain || gain * left < p_.minimum_remaining_gain) break;
       }
     }
-    // What the certificates bound (user manual, "Fidelity certificate"); without
+    // What the certificates bound (user manual, "Fidelity Certificate"); without
     // the safety check or the projection no bound is enforced.
     const bool certified = p_.use_safety && p_.do_project;
     const double none = std::numeric_limits<double>::infinity();
@@ -108,11 +96,10 @@ public:
   std::vector<Vec3> take_positions() { return std::move(pos_); }
 
 private:
-  // The floor the safety check applies: 1 in the quality-monotone mode;
-  // without an explicit floor, the default raised to the input's minimum
-  // aspect ratio, so that the output's is never below it.
+  // The floor the safety check applies: without an explicit floor, the
+  // default raised to the input's minimum aspect ratio, so that the output's
+  // is never below it.
   static double floor_of_check(const Flat_mesh& m, const Smoothing_parameters& p) {
-    if (p.quality_monotone) return 1.;
     if (!p.raise_floor_to_input_minimum) return p.quality_floor;
     double input_minimum = 1.;
     for (const auto& t : m.faces)
@@ -134,17 +121,14 @@ private:
 
   // d(v): ILSA displacement (Algo. 2), penalty-adjusted for smooth vertices
   // (Algo. 3; the face normals of T_new give the discrete normal N(v) of
-  // paper §3 where the penalty plane needs it), by default without its
-  // component along the vertex normal (user manual, "Fewer, Longer
-  // Iterations"), which each sweep of Algo. 3 drops ("Tangential Sweeps"),
-  // or else a last pass. `next_` serves as the sweeps' second buffer before
-  // the projection fills it.
+  // paper §3 where the penalty plane needs it), without its component
+  // along the vertex normal, which each sweep of Algo. 3 drops (user manual,
+  // "Tangential Displacements"; the paper's variant keeps it). `next_` serves
+  // as the sweeps' second buffer before the projection fills it.
   void compute_displacements() {
     compute_ilsa_displacement<ConcurrencyTag>(pos_, nb_, p_.relax1, p_.sweeps, tolerance_, d_, workspace_, next_);
-    adjust_displacement_by_penalty<ConcurrencyTag>(m_, pos_, nb_, penalty_, d_, face_values_, next_, workspace_.weights,
-                                                   penalty_.gauss_seidel ? &colours_ : nullptr);
-    if (p_.tangential && !penalty_.tangential_sweeps)
-      remove_normal_components<ConcurrencyTag>(m_, pos_, nb_.smooth, d_);
+    adjust_displacement_by_penalty<ConcurrencyTag>(m_, pos_, nb_, penalty_, d_, face_values_, next_,
+                                                   workspace_.weights);
   }
 
   // p(v): projection of v + d(v) onto T_ori, into `next_`; a move the check
@@ -201,7 +185,7 @@ private:
     return projector_.project(v, q, current, home, guard);
   }
 
-  // Retrying dropped moves (user manual, "Retrying dropped moves"): a vertex
+  // Retrying dropped moves (user manual, "Retrying Dropped Moves"): a vertex
   // whose move the safety check or the worsening pre-test dropped (but for
   // the quality floor in a star that was at or above it) is settled, left
   // untested, until its neighbours have travelled `retry_length_` in all since.
@@ -220,7 +204,7 @@ private:
     });
   }
 
-  // Convergence (user manual, "Stopping early"): the mean aspect ratio of the
+  // Convergence (user manual, "Stopping Early"): the mean aspect ratio of the
   // faces, each face's computed in parallel, summed in face order.
   double mean_quality() {
     parallel_for<ConcurrencyTag>(face_values_.size(), [&](std::size_t f) {
@@ -247,7 +231,6 @@ private:
   std::vector<Index> home_, next_home_, moved_;
   std::vector<unsigned char> guarded_, skipped_;
   ILSA_workspace workspace_;
-  Vertex_colours colours_; // of the smooth vertices, for Gauss-Seidel sweeps of the penalty step
   bool limit_retries_ = false;
   double retry_length_ = 0;
   // settled_[v]: the length the neighbours of `v` have travelled since it
@@ -261,14 +244,9 @@ inline namespace CGAL_ILSA_CORE_NAMESPACE { // declared in core.h, with what it 
 template <class ConcurrencyTag>
 std::vector<Vec3> smooth_flat_copy(const Flat_mesh& original, const Vertex_classification& classification,
                                    const ILSA_neighborhoods& neighborhoods, const Smoothing_parameters& parameters,
-                                   Set_up_incidences& incidences, double copy_seconds, ILSA_statistics& stats) {
-  CGAL::Real_timer timer; // for `verbose` (user manual, "Performance")
-  timer.start();
+                                   Set_up_incidences& incidences, ILSA_statistics& stats) {
   Global_loop<ConcurrencyTag> loop(original, classification, neighborhoods, parameters, incidences);
   incidences = Set_up_incidences();
-  if (parameters.verbose)
-    std::cerr << "ILSA set-up: " << copy_seconds << " s flat copy and classification, " << timer.time()
-              << " s projection trees, clearances and safety check\n";
   loop.run(stats);
   return loop.take_positions();
 }

@@ -7,13 +7,11 @@
 // only the slots of element `i` and reads values no other call of the same
 // loop writes (Jacobi), and reductions are maxima, which do not depend on
 // the order they are taken in: the result is bit-identical whatever the
-// number of threads (user manual, "Parallel runs"). Where several iterations
+// number of threads (user manual, "Parallel Runs"). Where several iterations
 // reach the same element, `Claim_stamps` lets exactly one of them compute it.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PARALLEL_LOOPS_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_PARALLEL_LOOPS_H
-
-#include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h> // is_parallel
 
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>
@@ -35,6 +33,21 @@ namespace CGAL {
 namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
+
+/// Whether `ConcurrencyTag` runs the loops with TBB (parallel_loops.h).
+template <class ConcurrencyTag>
+constexpr bool is_parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+
+template <class ConcurrencyTag> constexpr void check_concurrency_tag() {
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!is_parallel<ConcurrencyTag>, "Parallel_tag is enabled but TBB is unavailable.");
+#endif
+}
+
+/// The tag the core runs with (and, compiled once, is compiled for):
+/// `CGAL::Parallel_tag` for a tag convertible to it, else `CGAL::Sequential_tag`.
+template <class ConcurrencyTag>
+using Core_tag = std::conditional_t<is_parallel<ConcurrencyTag>, CGAL::Parallel_tag, CGAL::Sequential_tag>;
 
 /// Loops of at most this many iterations run on the calling thread: handing
 /// them to TBB costs more than they take.

@@ -28,14 +28,12 @@ namespace Polygon_mesh_processing {
 namespace internal {
 namespace ILSA {
 
-/// Plane of the soft constraint c(x) = 0 (user manual, "Plane constraint units"), as `a · (x − v) = k` with
-/// unit `a`. With no displacement yet it is the tangent plane at `v`, whose
-/// normal N(v) (paper §3, normalised) `vertex_normal()` computes; otherwise the
-/// plane through `v + d` perpendicular to `d`. The paper's second form,
-/// `d · (x − v) − |d|²`, is this one multiplied by `|d|`: normalising it gives
-/// c the unit of a length in both cases, so μ is scale-free. N(v) is only
-/// computed for a zero displacement: its least-squares solve is needed for few
-/// vertices, if any.
+/// Plane of the soft constraint c(x) = 0 (user manual, "Plane Constraint Units and Area Weights"), as `a · (x − v) = k`
+/// with unit `a`. With no displacement yet it is the tangent plane at `v`, whose normal N(v) (paper §3, normalised)
+/// `vertex_normal()` computes; otherwise the plane through `v + d` perpendicular to `d`. The paper's second form, `d ·
+/// (x − v) − |d|²`, is this one multiplied by `|d|`: normalising it gives c the unit of a length in both cases, so μ is
+/// scale-free. N(v) is only computed for a zero displacement: its least-squares solve is needed for few vertices, if
+/// any.
 template <class VertexNormal> std::pair<Vec3, double> penalty_plane(const Vec3& d, const VertexNormal& vertex_normal) {
   const double length = d.norm();
   if (length > 0) return {d / length, length};
@@ -56,7 +54,7 @@ inline Vec3 unit_vertex_normal(const Flat_mesh& m, const std::vector<Vec3>& pos,
 /// corrects the curvature. Unchanged for a vertex whose faces have no area.
 /// The normal is computed at each call rather than stored: the penalty sweeps
 /// call this for every smooth vertex, and an array of normals would cost 24
-/// bytes per vertex (user manual, "Tangential Sweeps").
+/// bytes per vertex (user manual, "Tangential Displacements").
 inline Vec3 without_normal_component(const Flat_mesh& m, const std::vector<Vec3>& pos, std::size_t v,
                                      const Vec3& displacement) {
   Vec3 n = Vec3::Zero();
@@ -141,17 +139,14 @@ inline Vec3 minimize_penalty_function(const Flat_mesh& m, const std::vector<Vec3
 /// `target`, before each sweep, the unprojected target `pos + d` of each
 /// vertex, which every neighbour's solve reads up to three times (all three
 /// overwritten: the caller lends arrays it does not need meanwhile).
-/// With `p.tangential_sweeps`, each sweep keeps every displacement in the
+/// With `p.tangential`, each sweep keeps every displacement in the
 /// tangent plane of its vertex (see without_normal_component()).
-/// With `colours` (the smooth vertices of `nb` coloured by colour_vertices()),
-/// the sweeps are multicolour Gauss-Seidel sweeps (user manual, "Sweep
-/// Order"), which leave `buffer` alone; without, Jacobi sweeps (the paper's).
 /// Returns the number of sweeps run.
 template <class ConcurrencyTag>
 std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector<Vec3>& pos,
                                            const ILSA_neighborhoods& nb, const Penalty_parameters& p,
                                            std::vector<Vec3>& d, std::vector<double>& beta, std::vector<Vec3>& buffer,
-                                           std::vector<double>& target, const Vertex_colours* colours = nullptr) {
+                                           std::vector<double>& target) {
   // β_j from the current faces; a floor at 1e-3 of the mean area keeps a
   // degenerate face from swamping the star.
   beta.resize(m.number_of_faces());
@@ -168,30 +163,15 @@ std::size_t adjust_displacement_by_penalty(const Flat_mesh& m, const std::vector
   const auto update = [&](std::size_t v) {
     const Vec3 d_new = minimize_penalty_function(m, pos, d, target, beta, v, p);
     const Vec3 mixed = p.relax2 * d_new + (1. - p.relax2) * d[v];
-    return p.tangential_sweeps ? without_normal_component(m, pos, v, mixed) : mixed;
+    return p.tangential ? without_normal_component(m, pos, v, mixed) : mixed;
   };
-  const auto set_target = [&](std::size_t w) {
-    const Vec3 at = pos[w] + d[w];
-    for (int i = 0; i < 3; ++i) target[3 * w + i] = at[i];
+  const auto set_targets = [&] {
+    parallel_for<ConcurrencyTag>(pos.size(), [&](std::size_t w) {
+      const Vec3 at = pos[w] + d[w];
+      for (int i = 0; i < 3; ++i) target[3 * w + i] = at[i];
+    });
   };
-  const auto set_targets = [&] { parallel_for<ConcurrencyTag>(pos.size(), set_target); };
-  if (colours == nullptr)
-    return run_jacobi_sweeps<ConcurrencyTag>(nb.smooth, p.sweeps, p.tolerance, d, buffer, update, set_targets);
-  set_targets();
-  return run_multicolour_sweeps<ConcurrencyTag>(*colours, p.sweeps, p.tolerance, d, update, set_target);
-}
-
-/// Removes from `d[v]`, for each vertex `v` of `vertices`, its component along
-/// its normal (see without_normal_component()): once after the sweeps of the
-/// penalty step, where they do not remove it themselves (user manual,
-/// "Tangential Sweeps").
-template <class ConcurrencyTag>
-void remove_normal_components(const Flat_mesh& m, const std::vector<Vec3>& pos, const std::vector<Index>& vertices,
-                              std::vector<Vec3>& d) {
-  parallel_for<ConcurrencyTag>(vertices.size(), [&](std::size_t i) {
-    const std::size_t v = vertices[i];
-    d[v] = without_normal_component(m, pos, v, d[v]);
-  });
+  return run_jacobi_sweeps<ConcurrencyTag>(nb.smooth, p.sweeps, p.tolerance, d, buffer, update, set_targets);
 }
 
 } // namespace ILSA

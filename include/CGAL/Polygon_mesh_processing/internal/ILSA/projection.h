@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Polygon_mesh_processing_ILSA authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Stage 4 of ILSA (user manual, "Projection guard"): projection of the moved vertices back onto the
+// Stage 4 of ILSA (user manual, "Projection Guard"): projection of the moved vertices back onto the
 // frozen original mesh. Smooth vertices go to the closest point of the
 // original surface (AABB tree over its faces), ridge vertices to the closest
 // point of their own crease polyline (AABB tree over the sharp edges).
@@ -16,7 +16,7 @@
 // vertex is projected onto that neighbourhood instead, so it can only travel
 // across its own patch of the surface, never through space.
 //
-// Local answer (user manual, "Local projection"): the guard makes the answer
+// Local answer (user manual, "Projection Guard"): the guard makes the answer
 // the closest point of the faces near the home face in every case, so a
 // smooth vertex is projected onto those faces alone (skipping the faces whose
 // bounding ball is out of reach). The AABB tree only tells whether the guard
@@ -187,7 +187,7 @@ public:
   }
 
 private:
-  // The sheet guard (user manual, "Projection guard"): the tree's answer
+  // The sheet guard (user manual, "Projection Guard"): the tree's answer
   // `found` on element `element` when that element is near `home` (one of
   // `for_each_near(home, f)`); otherwise the closest of the points
   // `closest(g)` of the elements near `home`, or `current` if none is closer

@@ -5,7 +5,7 @@
 // struct of three doubles with the few operations the core uses, rather than
 // Eigen's `Vector3d`, whose expression templates made a quarter of the code a
 // program calling the smoother hands the compiler's back end (user manual,
-// "Compiling the core once"). Each operation computes what Eigen 3.4 computes
+// "Compiling the Core Once"). Each operation computes what Eigen 3.4 computes
 // for a `Vector3d`, in the same order, so the results are the same bits: the
 // coordinates one by one, and the sums of dot() and squaredNorm() from the
 // first coordinate to the last.

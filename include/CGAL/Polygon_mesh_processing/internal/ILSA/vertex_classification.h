@@ -56,7 +56,7 @@ void compute_face_normals(const Flat_mesh& m, const std::vector<Vec3>& pos, std:
   parallel_for<ConcurrencyTag>(m.number_of_faces(), [&](std::size_t f) { normals[f] = unit_normal(pos, m.faces[f]); });
 }
 
-/// The crease contrast (user manual, "Crease contrast"): keeps a feature edge
+/// The crease contrast (user manual, "Crease Contrast"): keeps a feature edge
 /// (and a sharp edge) only if keeps_crease_contrast() says so. A feature edge
 /// it drops is curvature, not a crease line: it is no longer a feature edge,
 /// so the crease bound of the safety check does not hold it either. `curved`
@@ -82,8 +82,7 @@ inline void keep_contrasted_creases(const Flat_mesh& m, const Set_up_incidences&
   // Per face: the angle of the flatter of its two edges other than `e` (the
   // angles are computed where needed: few edges are feature edges, and an
   // array of them would add to the peak memory of large meshes). An edge of a
-  // degenerate face, whose normal is zero, counts as flat there, as in
-  // mesh_fidelity_ilsa(), so that both keep the same crease lines.
+  // degenerate face, whose normal is zero, counts as flat there.
   auto flat_next_to_degenerate = [&](std::size_t g) {
     const auto& fs = incidences.edge_faces[g];
     if (fs[0] != npos && fs[1] != npos && (face_normals[fs[0]].isZero(0) || face_normals[fs[1]].isZero(0))) return 0.;
@@ -132,7 +131,7 @@ inline void mark_feature_edges(const Flat_mesh& m, const Set_up_incidences& inci
 
 /// Boundary vertices, isolated and non-manifold vertices (corners), and the
 /// ridge candidates among the others: the discrete normal longer than a fold
-/// at the feature angle makes it (user manual, classification). A candidate
+/// at the feature angle makes it (user manual, "Feature Angle Convention"). A candidate
 /// counts only at the end of a feature edge (a sharp edge joins two; one
 /// without sharp edge stays smooth) unless `fix_unattached_candidates` fixes
 /// the others: the discrete normal, an SVD, is computed where it counts.
@@ -195,7 +194,7 @@ inline void mark_sharp_edges(const Flat_mesh& m, const Set_up_incidences& incide
 inline void type_candidates(const Flat_mesh& m, const Classification_options& opt, const Classification_work& w,
                             Vertex_classification& c) {
   const double pi = 3.14159265358979323846;
-  // Kink (user manual, "Crease kinks"): the crease's direction turns at `v`
+  // Kink (user manual, "Crease Kinks"): the crease's direction turns at `v`
   // by more than the kink angle, i.e. its two sharp edges meet at less than
   // 180° minus it. A vertex there is the tip of the crease: sliding would cut
   // it off. A zero-length sharp edge has no direction and counts as a kink.
