@@ -733,7 +733,7 @@ template <class Mesh> void test_degenerate_reference() {
   const Mesh tm = to_mesh<Mesh>(s);
   const Package_setup<Mesh> setup(tm);
   const ilsa::Flat_mesh& m = setup.m;
-  const ilsa::Move_safety safety(m, setup.c, setup.incidences, 0.5, 3e-4, true, 3);
+  const ilsa::Orientation_test safety(m, setup.incidences);
   std::size_t degenerate = 0;
   for (std::size_t f = 0; f < m.number_of_faces(); ++f) {
     const auto& t = m.faces[f];
@@ -822,7 +822,8 @@ template <class Mesh> void test_collapsed_faces_open_right_way() {
     const Package_setup<Mesh> setup(tm);
     const ilsa::Flat_mesh& m = setup.m;
     std::vector<double> scratch(m.number_of_faces());
-    ilsa::Move_safety safety(m, setup.c, setup.incidences, 0., std::numeric_limits<double>::infinity(), false, 3);
+    ilsa::Move_safety check(m, setup.c, setup.incidences, 0., std::numeric_limits<double>::infinity(), false, 3);
+    const ilsa::Orientation_test& safety = check.orientation();
     // Vertex (2, 1): at (1 + gap, 1) and next to (2, 0), unlike (1, 1). The
     // package's coordinates are centred and divided by the diagonal.
     auto flat = [&](double x, double y) { return ilsa::Vec3((ilsa::Vec3(x, y, 0.) - m.center) / m.scale); };
@@ -845,7 +846,7 @@ template <class Mesh> void test_collapsed_faces_open_right_way() {
       std::vector<ilsa::Index> next_home = home;
       d[a] = ilsa::Vec3(move.first, move.second, 0.) / m.scale;
       next[a] += d[a];
-      const auto counts = safety.enforce<CGAL::Sequential_tag>(
+      const auto counts = check.enforce<CGAL::Sequential_tag>(
           m.points, home, d, std::vector<ilsa::Index>{ilsa::Index(a)}, next, next_home, project, scratch);
       const bool right_way = move.first > move.second;
       for (std::size_t f = 0; f < m.number_of_faces(); ++f)
