@@ -158,10 +158,10 @@ ILSA_statistics smooth(const VertexRange& vertices, TriangleMesh& tm, const Name
  *   \cgalParamNEnd
  *   \cgalParamNBegin{edge_is_constrained_map}
  *     \cgalParamDescription{when given, these edges are the crease edges, and no edge is detected: the feature
- * angle, its curvature filters (the crease contrast and the open-crease rule of `classify_vertices_ilsa()`) and the
- * kink rule do not apply. With `relax_constraints(true)`, a vertex with two constrained edges slides along them and
- * one with one or more than two is fixed; by default, every end of a constrained edge is fixed. The crease bound of
- * `ilsa_fidelity_tolerance` holds along these edges}
+ * angle and its curvature filters (the crease contrast and the open-crease rule of `classify_vertices_ilsa()`) do
+ * not apply; the kink rule does. With `relax_constraints(true)`, a vertex with two constrained edges slides along
+ * them and one with one or more than two is fixed; by default, every end of a constrained edge is fixed. The crease
+ * bound of `ilsa_fidelity_tolerance` holds along these edges}
  *     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
  *     \cgalParamDefault{crease edges are detected with `ilsa_feature_angle`}
  *   \cgalParamNEnd
