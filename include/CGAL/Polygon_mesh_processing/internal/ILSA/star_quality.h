@@ -56,7 +56,6 @@ public:
   /// Whether a test runs at all.
   bool enabled() const { return quality_floor_ > 0 || reject_worsening_; }
   bool rejects_worsening() const { return reject_worsening_; }
-  double floor() const { return quality_floor_; }
 
   /// The tests of the move of `v` from `previous` to `next`, whose faces pass
   /// the flip and collapse tests; `quality_now` holds the aspect ratios of
