@@ -4,7 +4,9 @@
 // The fidelity certificate (user manual, "Fidelity Certificate"):
 // - the certified distances of a triangle and of a segment to a union of
 //   triangles or segments are upper bounds of the distances of densely
-//   sampled points, on random configurations;
+//   sampled points, on random configurations, and so are those of the
+//   height route (height_bound()) over random height fields, some folded,
+//   some reaching past the triangle;
 // - the smoothed meshes stay within the fidelity tolerance of their input,
 //   both ways, as judged by CGAL's own bounded-error symmetric Hausdorff
 //   distance (is_Hausdorff_distance_larger(), error 1e-5 of the diagonal,
@@ -98,6 +100,73 @@ void test_bounds_against_samples() {
   ILSA_CHECK(certified > 200 && segments_certified > 200);
 }
 
+// The quicker bound over a height field: random grid patches (some folded,
+// some steep) under random triangles, some reaching past the patch: every
+// bound it finds is at least the distance of every sampled point, and every
+// point it reports as far is farther than the limit from the whole patch.
+void test_height_bound_against_samples() {
+  std::mt19937 rng(20261207u);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  std::size_t certified = 0, far_points = 0;
+  const int grid = 6;
+  for (int c = 0; c < 3000; ++c) {
+    const double jitter = c % 5 == 0 ? 0.9 : 0.2, height = c % 3 == 0 ? 0.6 : 0.05;
+    std::vector<ilsa::Vec3> points;
+    for (int j = 0; j < grid; ++j)
+      for (int i = 0; i < grid; ++i)
+        points.push_back(ilsa::Vec3((i + jitter * unit(rng) / 2) * 3. / (grid - 1) - 1.5,
+                                    (j + jitter * unit(rng) / 2) * 3. / (grid - 1) - 1.5, height * unit(rng)));
+    std::vector<std::array<ilsa::Index, 3>> faces;
+    for (int j = 0; j + 1 < grid; ++j)
+      for (int i = 0; i + 1 < grid; ++i) {
+        const ilsa::Index v = ilsa::Index(j * grid + i);
+        faces.push_back({v, v + 1, v + ilsa::Index(grid) + 1});
+        faces.push_back({v, v + ilsa::Index(grid) + 1, v + ilsa::Index(grid)});
+      }
+    auto candidate = [&](std::size_t k) {
+      return std::array<ilsa::Vec3, 3>{points[faces[k][0]], points[faces[k][1]], points[faces[k][2]]};
+    };
+    auto cancelled = [&](std::size_t k, std::size_t i) {
+      const ilsa::Index u = faces[k][i], v = faces[k][(i + 1) % 3];
+      int net = 0;
+      for (const auto& f : faces)
+        for (std::size_t j = 0; j < 3; ++j)
+          net += int(f[j] == u && f[(j + 1) % 3] == v) - int(f[j] == v && f[(j + 1) % 3] == u);
+      return net == 0;
+    };
+    const double reach = c % 4 == 0 ? 2. : 1.;
+    auto corner = [&] { return ilsa::Vec3(reach * unit(rng), reach * unit(rng), 0.1 * unit(rng)); };
+    const ilsa::Vec3 a = corner(), b = corner(), d = corner();
+    const double limit = 0.05 + std::abs(unit(rng));
+    ilsa::Vec3 far;
+    bool has_far = false;
+    const double bound = ilsa::height_bound(a, b, d, faces.size(), candidate, cancelled, limit, &far, &has_far);
+    auto distance = [&](const ilsa::Vec3& x) {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < faces.size(); ++k) {
+        const auto t = candidate(k);
+        best = (std::min)(best, ilsa::squared_distance_to_triangle(x, t[0], t[1], t[2]));
+      }
+      return std::sqrt(best);
+    };
+    if (bound <= limit) {
+      ++certified;
+      double sampled = 0;
+      const int n = 30;
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j)
+          sampled = (std::max)(sampled, distance(a + (double(i) / n) * (b - a) + (double(j) / n) * (d - a)));
+      ILSA_CHECK(bound >= sampled - 1e-12);
+    } else if (has_far) {
+      ++far_points;
+      ILSA_CHECK(distance(far) > limit - 1e-12);
+    }
+  }
+  std::cout << "height bounds against samples: " << certified << " triangles certified of 3000, none below a sample; "
+            << far_points << " far points, all beyond the limit" << std::endl;
+  ILSA_CHECK(certified > 300 && far_points > 30);
+}
+
 std::size_t max_faces() {
   const char* text = std::getenv("ILSA_FIDELITY_MAX_FACES");
   return text ? std::size_t(std::strtoull(text, nullptr, 10)) : std::numeric_limits<std::size_t>::max();
@@ -180,6 +249,7 @@ void test_meshes() {
 
 int main() {
   test_bounds_against_samples();
+  test_height_bound_against_samples();
   test_meshes();
   std::cout << "test_ilsa_fidelity: OK" << std::endl;
   return 0;

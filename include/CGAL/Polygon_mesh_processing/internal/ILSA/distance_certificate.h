@@ -85,18 +85,32 @@ inline double cross(const Point2& o, const Point2& a, const Point2& b) {
 /// Polygon2 holds (`out` is then unusable).
 inline bool clip(const Polygon2& in, const Point2& a, const Point2& b, double sign, Polygon2& out) {
   out.n = 0;
+  if (in.n == 0) return true;
+  std::array<double, Polygon2::capacity> side;
+  bool all_in = true, all_out = true;
   for (int i = 0; i < in.n; ++i) {
-    const Point2& p = in.p[i];
-    const Point2& q = in.p[(i + 1) % in.n];
-    const double sp = sign * cross(a, b, p), sq = sign * cross(a, b, q);
+    side[std::size_t(i)] = sign * cross(a, b, in.p[std::size_t(i)]);
+    all_in = all_in && side[std::size_t(i)] >= 0;
+    all_out = all_out && side[std::size_t(i)] < 0;
+  }
+  if (all_out) return true;
+  if (all_in) {
+    out.n = in.n;
+    std::copy(in.p.begin(), in.p.begin() + in.n, out.p.begin());
+    return true;
+  }
+  for (int i = 0, j = 1; i < in.n; ++i, j = j + 1 == in.n ? 0 : j + 1) {
+    const Point2& p = in.p[std::size_t(i)];
+    const Point2& q = in.p[std::size_t(j)];
+    const double sp = side[std::size_t(i)], sq = side[std::size_t(j)];
     if (sp >= 0) {
       if (out.n == Polygon2::capacity) return false;
-      out.p[out.n++] = p;
+      out.p[std::size_t(out.n++)] = p;
     }
     if ((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) {
       if (out.n == Polygon2::capacity) return false;
       const double t = sp / (sp - sq);
-      out.p[out.n++] = {p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
+      out.p[std::size_t(out.n++)] = {p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
     }
   }
   return true;
@@ -173,6 +187,46 @@ inline bool is_thin(double double_area, double longest_squared) {
   return !(double_area > 1e-9 * longest_squared);
 }
 
+/// The clearance of the nearness tests of height_bound(), in the normalised
+/// units of the flat copy; far below the margin.
+constexpr double clearance = 1e-13;
+/// The smallest cosine of the angle between a candidate and the triangle that
+/// height_bound() takes (about 84 degrees): its heights grow with the slope.
+constexpr double minimum_cosine = 0.1;
+/// A candidate's bound from the corners of its footprint or of the triangle,
+/// without cutting out the part under it, is kept when it is at most this
+/// fraction of the limit.
+constexpr double loose_enough = 0.5;
+
+// A counterclockwise triangle for the nearness tests of height_bound(): its
+// corners, box and the lengths of its edges (edge i from corner i to i + 1).
+struct Clear_triangle {
+  Polygon2 t;
+  std::array<double, 3> length;
+  explicit Clear_triangle(const Polygon2& triangle) : t(triangle) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Point2 &a = t.p[i], &b = t.p[(i + 1) % 3];
+      length[i] = std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+    }
+  }
+  // Whether the segment `pq` is farther than `clearance` from the triangle:
+  // some edge line of the triangle, or the segment's own line, has the
+  // triangle on one side and the segment beyond the clearance on the other.
+  // (Not finding such a line only costs the quicker bound.)
+  bool clear_of(const Point2& p, const Point2& q) const {
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Point2 &a = t.p[i], &b = t.p[(i + 1) % 3];
+      const double gap = -clearance * length[i]; // outside is where cross(a, b, x) < 0
+      if (cross(a, b, p) < gap && cross(a, b, q) < gap) return true;
+    }
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    const double gap = clearance * (std::abs(dx) + std::abs(dy)); // at least clearance * |pq|
+    if (!(gap > 0)) return false;
+    const double s0 = cross(p, q, t.p[0]), s1 = cross(p, q, t.p[1]), s2 = cross(p, q, t.p[2]);
+    return (s0 > gap && s1 > gap && s2 > gap) || (s0 < -gap && s1 < -gap && s2 < -gap);
+  }
+};
+
 } // namespace certificate
 
 /// Segment version of triangle_bound(): an upper bound of the largest distance
@@ -226,6 +280,164 @@ double segment_bound(const Vec3& p, const Vec3& q, std::size_t n, const Candidat
     worst = (std::max)(worst, best);
   }
   return std::sqrt(worst);
+}
+
+/// A quicker bound for the usual case, where the candidates, seen along the
+/// normal of the triangle `abc`, form a height field over it: an upper bound
+/// of the largest distance from the points of `abc` to the union of the
+/// candidates, or infinity when this way finds none of at most `limit` (then
+/// triangle_bound() decides). `candidate(k)` gives the corners of candidate
+/// `k` (a `std::array<Vec3, 3>`); `cancelled(k, i)` whether the edge from its
+/// corner i to corner i + 1 is cancelled by the reverse edges of the other
+/// candidates (false when unsure: it costs only the quicker bound). When it
+/// finds a point of the triangle farther than `limit` from every candidate
+/// (then no bound exists), `*far` is that point and `*has_far` true.
+///
+/// The argument (user manual, "Fidelity Certificate"): project the candidates
+/// onto the plane of `abc`. For a point x of the plane on none of their
+/// edges, the number of candidate footprints containing x, each counted +1 or
+/// -1 by its orientation, is the winding number around x of the boundary of
+/// the candidates taken as a chain (their directed edges, an edge and its
+/// reverse cancelling). When no edge of that boundary comes near the
+/// triangle, this number is the same for all its points; if it is at least
+/// 1 at one of them, every point x of the triangle lies in the footprint of
+/// a positively oriented candidate t: the triangle is covered by the parts
+/// under these candidates (points on their edges by continuity). The point
+/// of t straight above or below x is at the height z_t(x) of t's plane over
+/// x, so the distance from x to t is at most |z_t(x)|, an affine function in
+/// absolute value: over the part under t it is largest at a corner of that
+/// part, and at most its largest value at the corners of t's footprint or of
+/// the triangle (both contain the part). The bound of a part is
+/// - the smaller of these two, if it is at most the bound found so far or
+///   than `loose_enough` times the limit (the part is not cut out);
+/// - else the largest height at the corners of the part;
+/// - else, if that exceeds the limit, the largest distance of these corners
+///   to t or to another candidate (convexity again).
+/// The bound of the triangle is the largest bound of its parts. A steep
+/// candidate (its plane at more than about 84 degrees from the triangle's)
+/// is left to triangle_bound(), as are thin triangles.
+/// Rounding: the nearness tests keep a clearance of `certificate::clearance`,
+/// and the corners and heights are exact for positions within a few units in
+/// the last place of the given ones, which the margin covers.
+template <class Candidate, class Cancelled>
+double height_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, const Candidate& candidate,
+                    const Cancelled& cancelled, double limit, Vec3* far = nullptr, bool* has_far = nullptr) {
+  using namespace certificate;
+  constexpr std::size_t capacity = 64;
+  const double inf = std::numeric_limits<double>::infinity();
+  if (n == 0 || n > capacity) return inf;
+  const Vec3 normal = (b - a).cross(c - a);
+  const double ab2 = (b - a).squaredNorm();
+  const double double_area = normal.norm();
+  if (is_thin(double_area, (std::max)({ab2, (c - b).squaredNorm(), (a - c).squaredNorm()}))) return inf;
+  Frame frame;
+  frame.origin = a;
+  frame.u = (b - a) / std::sqrt(ab2);
+  const Vec3 unit_normal = normal / double_area;
+  frame.w = unit_normal.cross(frame.u);
+  Polygon2 triangle;
+  triangle.n = 3;
+  triangle.p[0] = {0., 0.}, triangle.p[1] = frame.to2(b), triangle.p[2] = frame.to2(c); // counterclockwise
+  triangle.set_box();
+  const Point2 inside{(triangle.p[1].x + triangle.p[2].x) / 3, (triangle.p[1].y + triangle.p[2].y) / 3};
+
+  // The candidates in the frame: corners, heights, orientation.
+  std::array<std::array<Point2, 3>, capacity> q;
+  std::array<std::array<double, 3>, capacity> h;
+  std::array<double, capacity> area;
+  int winding = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::array<Vec3, 3> t = candidate(k);
+    for (std::size_t i = 0; i < 3; ++i) {
+      q[k][i] = frame.to2(t[i]);
+      h[k][i] = (t[i] - a).dot(unit_normal);
+    }
+    area[k] = cross(q[k][0], q[k][1], q[k][2]);
+    if (area[k] == 0) continue;
+    // The winding number at `inside`, if it is clear of the edges.
+    const std::array<Point2, 3>& f = q[k];
+    if (inside.x + clearance < (std::min)({f[0].x, f[1].x, f[2].x}) ||
+        inside.x - clearance > (std::max)({f[0].x, f[1].x, f[2].x}) ||
+        inside.y + clearance < (std::min)({f[0].y, f[1].y, f[2].y}) ||
+        inside.y - clearance > (std::max)({f[0].y, f[1].y, f[2].y}))
+      continue;
+    const double sign = area[k] > 0 ? 1. : -1.;
+    bool in = true;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Point2 &p = q[k][i], &r = q[k][(i + 1) % 3];
+      const double side = sign * cross(p, r, inside);
+      const double length = std::abs(r.x - p.x) + std::abs(r.y - p.y);
+      if (std::abs(side) <= clearance * length) return inf; // near the line: undecided
+      in = in && side > 0;
+    }
+    if (in) winding += area[k] > 0 ? 1 : -1;
+  }
+  if (winding < 1) return inf;
+
+  // No edge of the chain's boundary near the triangle.
+  const Clear_triangle clear(triangle);
+  const double lo_x = triangle.lo_x - clearance, hi_x = triangle.hi_x + clearance;
+  const double lo_y = triangle.lo_y - clearance, hi_y = triangle.hi_y + clearance;
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (cancelled(k, i)) continue;
+      const Point2 &p = q[k][i], &r = q[k][(i + 1) % 3];
+      if ((std::max)(p.x, r.x) < lo_x || (std::min)(p.x, r.x) > hi_x || (std::max)(p.y, r.y) < lo_y ||
+          (std::min)(p.y, r.y) > hi_y)
+        continue;
+      if (!clear.clear_of(p, r)) return inf;
+    }
+
+  // The heights over the parts of the triangle under the positive candidates.
+  double bound = 0;
+  Polygon2 cell, scratch;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!(area[k] > 0)) continue;
+    // The part under the candidate lies both in its footprint and in the
+    // triangle: the heights at the corners of either bound it.
+    const std::array<Point2, 3>& f = q[k];
+    const double lo = (std::min)({f[0].x, f[1].x, f[2].x}), hi = (std::max)({f[0].x, f[1].x, f[2].x});
+    const double lo2 = (std::min)({f[0].y, f[1].y, f[2].y}), hi2 = (std::max)({f[0].y, f[1].y, f[2].y});
+    if (hi < triangle.lo_x || lo > triangle.hi_x || hi2 < triangle.lo_y || lo2 > triangle.hi_y) continue;
+    const double highest = (std::max)({std::abs(h[k][0]), std::abs(h[k][1]), std::abs(h[k][2])});
+    if (highest <= bound) continue;
+    // The steepness: the footprint's area against the candidate's.
+    const std::array<Vec3, 3> t = candidate(k);
+    if (!(area[k] > minimum_cosine * (t[1] - t[0]).cross(t[2] - t[0]).norm())) return inf;
+    // z(p) = h0 + g . (p - q0), g from the two other corners.
+    const double ex = f[1].x - f[0].x, ey = f[1].y - f[0].y, fx = f[2].x - f[0].x, fy = f[2].y - f[0].y;
+    const double dh1 = h[k][1] - h[k][0], dh2 = h[k][2] - h[k][0];
+    const double gx = (dh1 * fy - dh2 * ey) / area[k], gy = (ex * dh2 - fx * dh1) / area[k];
+    auto z = [&](const Point2& p) { return std::abs(h[k][0] + gx * (p.x - f[0].x) + gy * (p.y - f[0].y)); };
+    const double loose = (std::min)(highest, (std::max)({z(triangle.p[0]), z(triangle.p[1]), z(triangle.p[2])}));
+    if (loose <= (std::max)(bound, loose_enough * limit)) {
+      bound = (std::max)(bound, loose);
+      continue;
+    }
+    if (!clip(triangle, f[0], f[1], 1., cell) || !clip(cell, f[1], f[2], 1., scratch) ||
+        !clip(scratch, f[2], f[0], 1., cell))
+      return inf;
+    if (cell.n < 3) continue;
+    double height = 0;
+    for (int i = 0; i < cell.n; ++i) height = (std::max)(height, z(cell.p[std::size_t(i)]));
+    if (height <= limit) {
+      bound = (std::max)(bound, height);
+      continue;
+    }
+    // Too high: the distances from the cell's corners to this candidate, or
+    // else to the best of the others, bound the cell as well (convexity).
+    const double limit2 = limit * limit;
+    double best = corner_bound(cell, frame, t, limit2);
+    for (std::size_t j = 0; j < n && best > limit2; ++j)
+      if (j != k) best = (std::min)(best, corner_bound(cell, frame, candidate(j), limit2));
+    if (best > limit2) {
+      // A corner farther than `limit` from every candidate: no bound exists.
+      if (!corners_near(cell, frame, n, candidate, limit2, far) && has_far) *has_far = far != nullptr;
+      return inf;
+    }
+    bound = (std::max)(bound, std::sqrt(best));
+  }
+  return bound;
 }
 
 /// An upper bound of the largest distance from the points of the triangle

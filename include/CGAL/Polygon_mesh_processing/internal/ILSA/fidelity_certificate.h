@@ -46,17 +46,23 @@ struct Face_candidates {
   static constexpr std::size_t capacity = 128;
   std::array<Index, capacity> face;
   std::size_t n = 0;
+  bool complete = true; // every face around the vertices of `f` is listed
 
   Face_candidates(const Flat_mesh& m, std::size_t f) {
     const auto& t = m.faces[f];
     face[n++] = Index(f);
     // A face around t[k] that has an earlier vertex of `f` was listed with it.
     for (std::size_t k = 0; k < 3; ++k)
-      for (const Index* g = m.vertex_faces.first(t[k]); g != m.vertex_faces.last(t[k]) && n < capacity; ++g) {
+      for (const Index* g = m.vertex_faces.first(t[k]); g != m.vertex_faces.last(t[k]); ++g) {
         const auto& s = m.faces[*g];
         bool listed = *g == f;
         for (std::size_t j = 0; j < k && !listed; ++j) listed = s[0] == t[j] || s[1] == t[j] || s[2] == t[j];
-        if (!listed) face[n++] = *g;
+        if (listed) continue;
+        if (n == capacity) {
+          complete = false;
+          return;
+        }
+        face[n++] = *g;
       }
   }
 
@@ -92,6 +98,26 @@ public:
     if (!enabled()) return;
     output_.assign(m_.number_of_faces(), false);
     input_.assign(m_.number_of_faces(), true);
+    vertex_flags_.assign(m_.number_of_vertices(), 0);
+    // An edge is balanced when the faces of the mesh use it as often in one
+    // direction as in the other (an interior edge between two faces of the
+    // same orientation is); per face, a bit per edge (from corner i to i + 1).
+    // (A face with a repeated vertex would be listed twice among the
+    // candidates of a face: then no edge is taken as balanced.)
+    balanced_.assign(m_.number_of_faces(), 0);
+    for (const auto& t : m_.faces)
+      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return;
+    for (std::size_t f = 0; f < m_.number_of_faces(); ++f)
+      for (std::size_t i = 0; i < 3; ++i) {
+        const Index u = m_.faces[f][i], v = m_.faces[f][(i + 1) % 3];
+        int net = 0;
+        for (const Index* g = m_.vertex_faces.first(u); g != m_.vertex_faces.last(u); ++g)
+          for (std::size_t j = 0; j < 3; ++j) {
+            const Index x = m_.faces[*g][j], y = m_.faces[*g][(j + 1) % 3];
+            net += int(x == u && y == v) - int(x == v && y == u);
+          }
+        if (net == 0) balanced_[f] |= static_cast<unsigned char>(1 << i);
+      }
   }
 
   bool enabled() const { return std::isfinite(tolerance_); }
@@ -110,19 +136,33 @@ public:
       stamp_ = 1;
     }
     for (Side* side : {&output_, &input_}) side->checked.clear();
+    // The smoothed faces around the moved vertices; the input faces whose
+    // candidates include one of them, `f`: those with a vertex of `f`, and
+    // those bounded against the second ring with a moved vertex among their
+    // candidates' (few faces). The vertices of these `f` are touched.
     for (std::size_t v : changed)
       for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
         output_.mark(*f, stamp_);
-        // The input faces whose candidates include the smoothed face `f`:
-        // those with a vertex of `f`, and those bounded against the second
-        // ring with a vertex next to one of `f`.
         for (Index u : m_.faces[*f]) {
+          if (vertex_flags_[u] & touched) continue;
+          vertex_flags_[u] |= touched;
           for (const Index* t = m_.vertex_faces.first(u); t != m_.vertex_faces.last(u); ++t) input_.mark(*t, stamp_);
-          for (const Index* w = m_.vertex_neighbors.first(u); w != m_.vertex_neighbors.last(u); ++w)
-            for (const Index* t = m_.vertex_faces.first(*w); t != m_.vertex_faces.last(*w); ++t)
-              if (input_.wide(*t)) input_.mark(*t, stamp_);
         }
       }
+    // (A face around a neighbour w of a vertex of `t` has a moved vertex when
+    // w is touched.)
+    for (std::size_t t = 0; t < m_.number_of_faces(); ++t) {
+      if (!input_.wide(t) || input_.stamp[t] == stamp_) continue;
+      bool depends = false;
+      for (Index v : m_.faces[t])
+        for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v) && !depends; ++w)
+          depends = (vertex_flags_[*w] & touched) != 0;
+      if (depends) input_.mark(t, stamp_);
+    }
+    for (std::size_t v : changed) {
+      for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
+        for (Index u : m_.faces[*f]) vertex_flags_[u] = 0;
+    }
     for (Side* side : {&output_, &input_}) side->failed.assign(side->checked.size(), 0);
     parallel_for<ConcurrencyTag>(output_.checked.size(), [&](std::size_t i) {
       const std::size_t f = output_.checked[i];
@@ -133,17 +173,27 @@ public:
     });
     parallel_for<ConcurrencyTag>(input_.checked.size(), [&](std::size_t i) {
       const std::size_t t = input_.checked[i];
-      Face_candidates candidates(m_, t);
-      const std::size_t near = candidates.n;
-      if (input_.accepted_wide[t]) candidates.add_second_ring(m_, t);
+      // The largest move of a vertex the bound depends on: those of the
+      // candidates, the faces around the vertices of `t` (their neighbours),
+      // and for a bound found against the second ring, the faces around these.
       double drift = 0;
-      for_each_dependency(candidates,
-                          [&](std::size_t w) { drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm()); });
+      auto grow = [&](std::size_t w) { drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm()); };
+      if (input_.accepted_wide[t]) {
+        Face_candidates candidates(m_, t);
+        candidates.add_second_ring(m_, t);
+        for_each_dependency(candidates, grow);
+      } else {
+        for (Index v : m_.faces[t]) {
+          grow(v);
+          std::for_each(m_.vertex_neighbors.first(v), m_.vertex_neighbors.last(v), grow);
+        }
+      }
       input_.failed[i] = !input_.certify(t, std::sqrt(drift), limit_, [&](bool& wide) {
         // The first ring, and if that fails the second ring too (smoothed
         // vertices slide on the input, along a crease sometimes farther than
         // the first ring of the input face reaches).
-        candidates.n = near;
+        Face_candidates candidates(m_, t);
+        const std::size_t near = candidates.n;
         Vec3 far;
         bool has_far = false;
         const double b = input_distance(next, t, candidates, &far, &has_far);
@@ -243,6 +293,19 @@ private:
     }
   };
 
+  // Whether the edge from corner i to corner i + 1 of candidate k, among the
+  // faces around the vertices of face f, is cancelled by the reverse edges of
+  // the others: it has a vertex of f, so every face that has it is among the
+  // candidates when they are complete, and the mesh's faces balance it.
+  bool cancelled(std::size_t f, const Face_candidates& candidates, std::size_t k, std::size_t i) const {
+    if (!candidates.complete) return false;
+    const auto& s = m_.faces[candidates.face[k]];
+    const Index u = s[i], v = s[(i + 1) % 3];
+    const auto& t = m_.faces[f];
+    const bool near = u == t[0] || u == t[1] || u == t[2] || v == t[0] || v == t[1] || v == t[2];
+    return near && (balanced_[candidates.face[k]] >> i & 1);
+  }
+
   template <class F> void for_each_dependency(const Face_candidates& candidates, const F& f) const {
     for (std::size_t k = 0; k < candidates.n; ++k)
       for (Index w : m_.faces[candidates.face[k]]) f(w);
@@ -267,13 +330,22 @@ private:
   double output_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
                          Vec3* far = nullptr, bool* has_far = nullptr) const {
     const auto& t = m_.faces[f];
-    return triangle_bound(
-        pos[t[0]], pos[t[1]], pos[t[2]], candidates.n,
-        [&](std::size_t k) {
-          const auto& s = m_.faces[candidates.face[k]];
-          return std::array<Vec3, 3>{m_.points[s[0]], m_.points[s[1]], m_.points[s[2]]};
-        },
-        limit_, far, has_far);
+    auto candidate = [&](std::size_t k) {
+      const auto& s = m_.faces[candidates.face[k]];
+      return std::array<Vec3, 3>{m_.points[s[0]], m_.points[s[1]], m_.points[s[2]]};
+    };
+    Vec3 quick_far;
+    bool quick_has_far = false;
+    const double quick = height_bound(
+        pos[t[0]], pos[t[1]], pos[t[2]], candidates.n, candidate,
+        [&](std::size_t k, std::size_t i) { return cancelled(f, candidates, k, i); }, limit_, &quick_far,
+        &quick_has_far);
+    if (quick <= limit_) return quick;
+    if (quick_has_far) { // no bound against these candidates
+      if (far) *far = quick_far, *has_far = true;
+      return quick;
+    }
+    return triangle_bound(pos[t[0]], pos[t[1]], pos[t[2]], candidates.n, candidate, limit_, far, has_far);
   }
   // Whether `x` is within the limit of one of the candidates from `first` on, at `at`.
   bool near_any(const Vec3& x, const Face_candidates& candidates, std::size_t first,
@@ -288,19 +360,32 @@ private:
   double input_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
                         Vec3* far = nullptr, bool* has_far = nullptr) const {
     const auto& t = m_.faces[f];
-    return triangle_bound(
-        m_.points[t[0]], m_.points[t[1]], m_.points[t[2]], candidates.n,
-        [&](std::size_t k) {
-          const auto& s = m_.faces[candidates.face[k]];
-          return std::array<Vec3, 3>{pos[s[0]], pos[s[1]], pos[s[2]]};
-        },
-        limit_, far, has_far);
+    auto candidate = [&](std::size_t k) {
+      const auto& s = m_.faces[candidates.face[k]];
+      return std::array<Vec3, 3>{pos[s[0]], pos[s[1]], pos[s[2]]};
+    };
+    Vec3 quick_far;
+    bool quick_has_far = false;
+    const double quick = height_bound(
+        m_.points[t[0]], m_.points[t[1]], m_.points[t[2]], candidates.n, candidate,
+        [&](std::size_t k, std::size_t i) { return cancelled(f, candidates, k, i); }, limit_, &quick_far,
+        &quick_has_far);
+    if (quick <= limit_) return quick;
+    if (quick_has_far) { // no bound against these candidates
+      if (far) *far = quick_far, *has_far = true;
+      return quick;
+    }
+    return triangle_bound(m_.points[t[0]], m_.points[t[1]], m_.points[t[2]], candidates.n, candidate, limit_, far,
+                          has_far);
   }
 
   const Flat_mesh& m_;
   double tolerance_, limit_;
   Side output_, input_; // smoothed faces to the input; input faces to the smoothed surface
   std::uint32_t stamp_ = 0;
+  static constexpr unsigned char touched = 1;
+  std::vector<unsigned char> vertex_flags_; // per vertex, in check(): touched (0 outside)
+  std::vector<unsigned char> balanced_;     // per face: which of its edges are balanced
 };
 
 } // namespace ILSA
