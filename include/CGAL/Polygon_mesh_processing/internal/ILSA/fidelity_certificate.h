@@ -329,23 +329,7 @@ private:
   }
   double output_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
                          Vec3* far = nullptr, bool* has_far = nullptr) const {
-    const auto& t = m_.faces[f];
-    auto candidate = [&](std::size_t k) {
-      const auto& s = m_.faces[candidates.face[k]];
-      return std::array<Vec3, 3>{m_.points[s[0]], m_.points[s[1]], m_.points[s[2]]};
-    };
-    Vec3 quick_far;
-    bool quick_has_far = false;
-    const double quick = height_bound(
-        pos[t[0]], pos[t[1]], pos[t[2]], candidates.n, candidate,
-        [&](std::size_t k, std::size_t i) { return cancelled(f, candidates, k, i); }, limit_, &quick_far,
-        &quick_has_far);
-    if (quick <= limit_) return quick;
-    if (quick_has_far) { // no bound against these candidates
-      if (far) *far = quick_far, *has_far = true;
-      return quick;
-    }
-    return triangle_bound(pos[t[0]], pos[t[1]], pos[t[2]], candidates.n, candidate, limit_, far, has_far);
+    return face_bound(pos, f, candidates, m_.points, far, has_far);
   }
   // Whether `x` is within the limit of one of the candidates from `first` on, at `at`.
   bool near_any(const Vec3& x, const Face_candidates& candidates, std::size_t first,
@@ -359,24 +343,30 @@ private:
   // Input face `f` against the smoothed faces (at `pos`) around its vertices.
   double input_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
                         Vec3* far = nullptr, bool* has_far = nullptr) const {
+    return face_bound(m_.points, f, candidates, pos, far, has_far);
+  }
+  // Face `f` with its corners at `corners` against the candidates with theirs
+  // at `at`: the height route, then, unless it found a point too far from
+  // every candidate, the piece route (distance_certificate.h).
+  double face_bound(const std::vector<Vec3>& corners, std::size_t f, const Face_candidates& candidates,
+                    const std::vector<Vec3>& at, Vec3* far, bool* has_far) const {
     const auto& t = m_.faces[f];
     auto candidate = [&](std::size_t k) {
       const auto& s = m_.faces[candidates.face[k]];
-      return std::array<Vec3, 3>{pos[s[0]], pos[s[1]], pos[s[2]]};
+      return std::array<Vec3, 3>{at[s[0]], at[s[1]], at[s[2]]};
     };
     Vec3 quick_far;
     bool quick_has_far = false;
     const double quick = height_bound(
-        m_.points[t[0]], m_.points[t[1]], m_.points[t[2]], candidates.n, candidate,
+        corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, candidate,
         [&](std::size_t k, std::size_t i) { return cancelled(f, candidates, k, i); }, limit_, &quick_far,
         &quick_has_far);
     if (quick <= limit_) return quick;
-    if (quick_has_far) { // no bound against these candidates
+    if (quick_has_far) {
       if (far) *far = quick_far, *has_far = true;
       return quick;
     }
-    return triangle_bound(m_.points[t[0]], m_.points[t[1]], m_.points[t[2]], candidates.n, candidate, limit_, far,
-                          has_far);
+    return triangle_bound(corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, candidate, limit_, far, has_far);
   }
 
   const Flat_mesh& m_;
