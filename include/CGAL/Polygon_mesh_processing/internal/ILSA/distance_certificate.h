@@ -118,13 +118,24 @@ inline bool clip(const Polygon2& in, const Point2& a, const Point2& b, double si
 
 /// An orthonormal frame of the plane of a triangle, its first corner at the origin.
 struct Frame {
-  Vec3 origin, u, w;
+  Vec3 origin, u, w, normal; // normal: the unit normal, u x w
   Point2 to2(const Vec3& x) const {
     const Vec3 r = x - origin;
     return {r.dot(u), r.dot(w)};
   }
   Vec3 to3(const Point2& p) const { return origin + p.x * u + p.y * w; }
 };
+
+/// The frame of the plane of the triangle `a b c` whose normal (not zero) is
+/// `normal`: its origin at `a`, u along `ab`.
+inline Frame plane_frame(const Vec3& a, const Vec3& b, const Vec3& normal) {
+  Frame frame;
+  frame.origin = a;
+  frame.u = (b - a) / (b - a).norm();
+  frame.normal = normal / normal.norm();
+  frame.w = frame.normal.cross(frame.u);
+  return frame;
+}
 
 /// Pieces not yet bounded; at most `capacity`.
 struct Pieces {
@@ -159,6 +170,17 @@ double corner_bound(const Polygon2& piece, const Frame& frame, const Triangle& t
     }
   }
   return worst;
+}
+
+// The smallest over the candidates, taken from `first` on (cyclically), of
+// corner_bound(), stopping at the first one within `limit2`.
+template <class Candidate>
+double best_corner_bound(const Polygon2& piece, const Frame& frame, std::size_t n, const Candidate& candidate,
+                         std::size_t first, double limit2) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < n && best > limit2; ++j)
+    best = (std::min)(best, corner_bound(piece, frame, candidate((first + j) % n), limit2));
+  return best;
 }
 
 // Whether every corner of `piece` is within `limit` of a candidate (if not,
@@ -327,14 +349,9 @@ double height_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, 
   const double inf = std::numeric_limits<double>::infinity();
   if (n == 0 || n > capacity) return inf;
   const Vec3 normal = (b - a).cross(c - a);
-  const double ab2 = (b - a).squaredNorm();
-  const double double_area = normal.norm();
-  if (is_thin(double_area, (std::max)({ab2, (c - b).squaredNorm(), (a - c).squaredNorm()}))) return inf;
-  Frame frame;
-  frame.origin = a;
-  frame.u = (b - a) / std::sqrt(ab2);
-  const Vec3 unit_normal = normal / double_area;
-  frame.w = unit_normal.cross(frame.u);
+  if (is_thin(normal.norm(), (std::max)({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()})))
+    return inf;
+  const Frame frame = plane_frame(a, b, normal);
   Polygon2 triangle;
   triangle.n = 3;
   triangle.p[0] = {0., 0.}, triangle.p[1] = frame.to2(b), triangle.p[2] = frame.to2(c); // counterclockwise
@@ -345,21 +362,22 @@ double height_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, 
   std::array<std::array<Point2, 3>, capacity> q;
   std::array<std::array<double, 3>, capacity> h;
   std::array<double, capacity> area;
+  std::array<std::array<double, 4>, capacity> box; // of the footprint: lowest x, highest x, lowest y, highest y
   int winding = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const std::array<Vec3, 3> t = candidate(k);
     for (std::size_t i = 0; i < 3; ++i) {
       q[k][i] = frame.to2(t[i]);
-      h[k][i] = (t[i] - a).dot(unit_normal);
+      h[k][i] = (t[i] - a).dot(frame.normal);
     }
-    area[k] = cross(q[k][0], q[k][1], q[k][2]);
+    const std::array<Point2, 3>& f = q[k];
+    box[k] = {(std::min)({f[0].x, f[1].x, f[2].x}), (std::max)({f[0].x, f[1].x, f[2].x}),
+              (std::min)({f[0].y, f[1].y, f[2].y}), (std::max)({f[0].y, f[1].y, f[2].y})};
+    area[k] = cross(f[0], f[1], f[2]);
     if (area[k] == 0) continue;
     // The winding number at `inside`, if it is clear of the edges.
-    const std::array<Point2, 3>& f = q[k];
-    if (inside.x + clearance < (std::min)({f[0].x, f[1].x, f[2].x}) ||
-        inside.x - clearance > (std::max)({f[0].x, f[1].x, f[2].x}) ||
-        inside.y + clearance < (std::min)({f[0].y, f[1].y, f[2].y}) ||
-        inside.y - clearance > (std::max)({f[0].y, f[1].y, f[2].y}))
+    if (inside.x + clearance < box[k][0] || inside.x - clearance > box[k][1] || inside.y + clearance < box[k][2] ||
+        inside.y - clearance > box[k][3])
       continue;
     const double sign = area[k] > 0 ? 1. : -1.;
     bool in = true;
@@ -395,10 +413,10 @@ double height_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, 
     if (!(area[k] > 0)) continue;
     // The part under the candidate lies both in its footprint and in the
     // triangle: the heights at the corners of either bound it.
+    if (box[k][1] < triangle.lo_x || box[k][0] > triangle.hi_x || box[k][3] < triangle.lo_y ||
+        box[k][2] > triangle.hi_y)
+      continue;
     const std::array<Point2, 3>& f = q[k];
-    const double lo = (std::min)({f[0].x, f[1].x, f[2].x}), hi = (std::max)({f[0].x, f[1].x, f[2].x});
-    const double lo2 = (std::min)({f[0].y, f[1].y, f[2].y}), hi2 = (std::max)({f[0].y, f[1].y, f[2].y});
-    if (hi < triangle.lo_x || lo > triangle.hi_x || hi2 < triangle.lo_y || lo2 > triangle.hi_y) continue;
     const double highest = (std::max)({std::abs(h[k][0]), std::abs(h[k][1]), std::abs(h[k][2])});
     if (highest <= bound) continue;
     // The steepness: the footprint's area against the candidate's.
@@ -427,9 +445,7 @@ double height_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, 
     // Too high: the distances from the cell's corners to this candidate, or
     // else to the best of the others, bound the cell as well (convexity).
     const double limit2 = limit * limit;
-    double best = corner_bound(cell, frame, t, limit2);
-    for (std::size_t j = 0; j < n && best > limit2; ++j)
-      if (j != k) best = (std::min)(best, corner_bound(cell, frame, candidate(j), limit2));
+    const double best = best_corner_bound(cell, frame, n, candidate, k, limit2);
     if (best > limit2) {
       // A corner farther than `limit` from every candidate: no bound exists.
       if (!corners_near(cell, frame, n, candidate, limit2, far) && has_far) *has_far = far != nullptr;
@@ -476,11 +492,7 @@ double triangle_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n
     // the candidates themselves from above.
     return edge + h;
   }
-  Frame frame;
-  frame.origin = a;
-  frame.u = (b - a) / std::sqrt(l2[2]);
-  const Vec3 unit_normal = normal / normal.norm();
-  frame.w = unit_normal.cross(frame.u);
+  const Frame frame = plane_frame(a, b, normal);
   // The first candidate, at the corners of the whole triangle.
   Polygon2 whole;
   whole.n = 3;
@@ -564,9 +576,7 @@ double triangle_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n
   Polygon2 piece;
   while (open.n > 0) {
     piece.assign(open.piece[std::size_t(--open.n)]);
-    double best = inf;
-    for (std::size_t j = 0; j < n && best > limit2; ++j)
-      best = (std::min)(best, corner_bound(piece, frame, candidate((last + j) % n), limit2));
+    const double best = best_corner_bound(piece, frame, n, candidate, last, limit2);
     if (best <= limit2) {
       worst = (std::max)(worst, best);
       continue;
