@@ -367,8 +367,9 @@ double height_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, 
   for (std::size_t k = 0; k < n; ++k) {
     const std::array<Vec3, 3> t = candidate(k);
     for (std::size_t i = 0; i < 3; ++i) {
-      q[k][i] = frame.to2(t[i]);
-      h[k][i] = (t[i] - a).dot(frame.normal);
+      const Vec3 r = t[i] - a; // (a is the frame's origin)
+      q[k][i] = {r.dot(frame.u), r.dot(frame.w)};
+      h[k][i] = r.dot(frame.normal);
     }
     const std::array<Point2, 3>& f = q[k];
     box[k] = {(std::min)({f[0].x, f[1].x, f[2].x}), (std::max)({f[0].x, f[1].x, f[2].x}),
@@ -398,10 +399,9 @@ double height_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, 
   const double lo_y = triangle.lo_y - clearance, hi_y = triangle.hi_y + clearance;
   for (std::size_t k = 0; k < n; ++k)
     for (std::size_t i = 0; i < 3; ++i) {
-      if (cancelled(k, i)) continue;
       const Point2 &p = q[k][i], &r = q[k][(i + 1) % 3];
       if ((std::max)(p.x, r.x) < lo_x || (std::min)(p.x, r.x) > hi_x || (std::max)(p.y, r.y) < lo_y ||
-          (std::min)(p.y, r.y) > hi_y)
+          (std::min)(p.y, r.y) > hi_y || cancelled(k, i))
         continue;
       if (!clear.clear_of(p, r)) return inf;
     }
@@ -419,12 +419,12 @@ double height_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, 
     const std::array<Point2, 3>& f = q[k];
     const double highest = (std::max)({std::abs(h[k][0]), std::abs(h[k][1]), std::abs(h[k][2])});
     if (highest <= bound) continue;
-    // The steepness: the footprint's area against the candidate's.
-    const std::array<Vec3, 3> t = candidate(k);
-    if (!(area[k] > minimum_cosine * (t[1] - t[0]).cross(t[2] - t[0]).norm())) return inf;
-    // z(p) = h0 + g . (p - q0), g from the two other corners.
+    // The steepness: the footprint's area against the candidate's, from its
+    // corners in the frame (orthonormal: x, y and the height).
     const double ex = f[1].x - f[0].x, ey = f[1].y - f[0].y, fx = f[2].x - f[0].x, fy = f[2].y - f[0].y;
     const double dh1 = h[k][1] - h[k][0], dh2 = h[k][2] - h[k][0];
+    if (!(area[k] > minimum_cosine * Vec3(ex, ey, dh1).cross(Vec3(fx, fy, dh2)).norm())) return inf;
+    // z(p) = h0 + g . (p - q0), g from the two other corners.
     const double gx = (dh1 * fy - dh2 * ey) / area[k], gy = (ex * dh2 - fx * dh1) / area[k];
     auto z = [&](const Point2& p) { return std::abs(h[k][0] + gx * (p.x - f[0].x) + gy * (p.y - f[0].y)); };
     const double loose = (std::min)(highest, (std::max)({z(triangle.p[0]), z(triangle.p[1]), z(triangle.p[2])}));

@@ -293,17 +293,21 @@ private:
     }
   };
 
-  // Whether the edge from corner i to corner i + 1 of candidate k, among the
-  // faces around the vertices of face f, is cancelled by the reverse edges of
-  // the others: it has a vertex of f, so every face that has it is among the
-  // candidates when they are complete, and the mesh's faces balance it.
-  bool cancelled(std::size_t f, const Face_candidates& candidates, std::size_t k, std::size_t i) const {
-    if (!candidates.complete) return false;
-    const auto& s = m_.faces[candidates.face[k]];
-    const Index u = s[i], v = s[(i + 1) % 3];
+  // Per candidate of face f (among the faces around its vertices), a bit per
+  // edge (from corner i to corner i + 1): whether the edge is cancelled by the
+  // reverse edges of the others. It is when it has a vertex of f, so that
+  // every face that has it is among the candidates when they are complete,
+  // and the mesh's faces balance it.
+  void cancelled_edges(std::size_t f, const Face_candidates& candidates,
+                       std::array<unsigned char, Face_candidates::capacity>& cancelled) const {
     const auto& t = m_.faces[f];
-    const bool near = u == t[0] || u == t[1] || u == t[2] || v == t[0] || v == t[1] || v == t[2];
-    return near && (balanced_[candidates.face[k]] >> i & 1);
+    for (std::size_t k = 0; k < candidates.n; ++k) {
+      const auto& s = m_.faces[candidates.face[k]];
+      unsigned corners = 0; // those that are vertices of f
+      for (std::size_t i = 0; i < 3; ++i) corners |= unsigned(s[i] == t[0] || s[i] == t[1] || s[i] == t[2]) << i;
+      const unsigned near = corners | corners >> 1 | (corners & 1) << 2; // edge i: corner i or i + 1
+      cancelled[k] = candidates.complete ? static_cast<unsigned char>(near & balanced_[candidates.face[k]]) : 0;
+    }
   }
 
   template <class F> void for_each_dependency(const Face_candidates& candidates, const F& f) const {
@@ -355,12 +359,13 @@ private:
       const auto& s = m_.faces[candidates.face[k]];
       return std::array<Vec3, 3>{at[s[0]], at[s[1]], at[s[2]]};
     };
+    std::array<unsigned char, Face_candidates::capacity> cancelled;
+    cancelled_edges(f, candidates, cancelled);
     Vec3 quick_far;
     bool quick_has_far = false;
     const double quick = height_bound(
         corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, candidate,
-        [&](std::size_t k, std::size_t i) { return cancelled(f, candidates, k, i); }, limit_, &quick_far,
-        &quick_has_far);
+        [&](std::size_t k, std::size_t i) { return (cancelled[k] >> i & 1) != 0; }, limit_, &quick_far, &quick_has_far);
     if (quick <= limit_) return quick;
     if (quick_has_far) {
       if (far) *far = quick_far, *has_far = true;
