@@ -30,7 +30,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -96,8 +95,8 @@ public:
   Fidelity_certificate(const Flat_mesh& mesh, double tolerance)
       : m_(mesh), tolerance_(tolerance), limit_(tolerance - certificate_margin) {
     if (!enabled()) return;
-    output_.assign(m_.number_of_faces(), false);
-    input_.assign(m_.number_of_faces(), true);
+    output_.assign(m_.number_of_faces());
+    input_.assign(m_.number_of_faces());
     vertex_flags_.assign(m_.number_of_vertices(), 0);
     // An edge is balanced when the faces of the mesh use it as often in one
     // direction as in the other (an interior edge between two faces of the
@@ -131,33 +130,29 @@ public:
   void check(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, const std::vector<Index>& changed,
              const Blame& blame) {
     if (!enabled() || changed.empty()) return;
-    if (++stamp_ == 0) {
-      for (Side* side : {&output_, &input_}) std::fill(side->stamp.begin(), side->stamp.end(), 0);
-      stamp_ = 1;
-    }
-    for (Side* side : {&output_, &input_}) side->checked.clear();
+    for (Side* side : {&output_, &input_}) side->start_check();
     // The smoothed faces around the moved vertices; the input faces whose
     // candidates include one of them, `f`: those with a vertex of `f`, and
     // those bounded against the second ring with a moved vertex among their
     // candidates' (few faces). The vertices of these `f` are touched.
     for (std::size_t v : changed)
       for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f) {
-        output_.mark(*f, stamp_);
+        output_.mark(*f);
         for (Index u : m_.faces[*f]) {
           if (vertex_flags_[u] & touched) continue;
           vertex_flags_[u] |= touched;
-          for (const Index* t = m_.vertex_faces.first(u); t != m_.vertex_faces.last(u); ++t) input_.mark(*t, stamp_);
+          for (const Index* t = m_.vertex_faces.first(u); t != m_.vertex_faces.last(u); ++t) input_.mark(*t);
         }
       }
     // (A face around a neighbour w of a vertex of `t` has a moved vertex when
     // w is touched.)
     for (std::size_t t = 0; t < m_.number_of_faces(); ++t) {
-      if (!input_.wide(t) || input_.stamp[t] == stamp_) continue;
+      if (!input_.wide(t) || input_.has(t, Side::listed)) continue;
       bool depends = false;
       for (Index v : m_.faces[t])
         for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v) && !depends; ++w)
           depends = (vertex_flags_[*w] & touched) != 0;
-      if (depends) input_.mark(t, stamp_);
+      if (depends) input_.mark(t);
     }
     for (std::size_t v : changed) {
       for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
@@ -178,7 +173,7 @@ public:
       // and for a bound found against the second ring, the faces around these.
       double drift = 0;
       auto grow = [&](std::size_t w) { drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm()); };
-      if (input_.accepted_wide[t]) {
+      if (input_.has(t, Side::accepted_wide)) {
         Face_candidates candidates(m_, t);
         candidates.add_second_ring(m_, t);
         for_each_dependency(candidates, grow);
@@ -250,44 +245,48 @@ private:
   struct Side {
     std::vector<float> accepted;        // a bound at the accepted positions (rounded up)
     std::vector<float> trial;           // a bound at the positions of the face's last check, if it passed
-    std::vector<std::uint32_t> stamp;   // the last check that listed the face
-    std::vector<unsigned char> in_call; // listed since the last accept()
+    std::vector<unsigned char> flags;   // per face: the flags below
     std::vector<Index> checked, called; // the faces of the current check; those listed since the last accept()
     std::vector<unsigned char> failed;  // per face of `checked`
-    // Input faces: whether the accepted bound, or the trial one, was found
-    // against the second ring of candidates too (Face_candidates::add_second_ring()).
-    std::vector<unsigned char> accepted_wide, trial_wide;
+    // The flags of a face: listed by the current check; listed since the last
+    // accept(); (input faces) whether the accepted bound, or the trial one, was
+    // found against the second ring of candidates too (Face_candidates::add_second_ring()).
+    static constexpr unsigned char listed = 1, in_call = 2, accepted_wide = 4, trial_wide = 8;
 
-    void assign(std::size_t n, bool rings) {
-      accepted.assign(n, 0.f), trial.assign(n, 0.f), stamp.assign(n, 0), in_call.assign(n, 0);
-      if (rings) accepted_wide.assign(n, 0), trial_wide.assign(n, 0);
+    void assign(std::size_t n) { accepted.assign(n, 0.f), trial.assign(n, 0.f), flags.assign(n, 0); }
+    bool has(std::size_t f, unsigned char flag) const { return (flags[f] & flag) != 0; }
+    void set(std::size_t f, unsigned char flag, bool on) {
+      flags[f] = static_cast<unsigned char>(on ? flags[f] | flag : flags[f] & ~flag);
     }
-    bool wide(std::size_t f) const { return accepted_wide[f] || trial_wide[f]; }
-    void mark(std::size_t f, std::uint32_t s) {
-      if (stamp[f] == s) return;
-      stamp[f] = s;
+    bool wide(std::size_t f) const { return has(f, accepted_wide | trial_wide); }
+    void start_check() {
+      for (Index f : checked) set(f, listed, false);
+      checked.clear();
+    }
+    void mark(std::size_t f) {
+      if (has(f, listed)) return;
+      set(f, listed, true);
       checked.push_back(Index(f));
-      if (!in_call[f]) in_call[f] = 1, called.push_back(Index(f));
+      if (!has(f, in_call)) set(f, in_call, true), called.push_back(Index(f));
     }
     // The accepted bound grown by `drift`, or else `bound()`, if within `limit`.
     // `bound(wide)` sets `wide` when it used the second ring.
     template <class Bound> bool certify(std::size_t f, double drift, double limit, const Bound& bound) {
       const double grown = double(accepted[f]) + drift * (1. + 1e-9) + 1e-15;
-      bool used_wide = !accepted_wide.empty() && accepted_wide[f];
+      bool used_wide = has(f, accepted_wide);
       const double b = grown <= limit ? grown : bound(used_wide);
       const bool ok = b <= limit;
       trial[f] = ok ? float_rounded_up(b) : std::numeric_limits<float>::infinity();
-      if (ok && !trial_wide.empty()) trial_wide[f] = used_wide;
+      if (ok) set(f, trial_wide, used_wide);
       return ok;
     }
     void accept() {
       for (Index f : called) {
         if (trial[f] != std::numeric_limits<float>::infinity()) {
           accepted[f] = trial[f];
-          if (!accepted_wide.empty()) accepted_wide[f] = trial_wide[f];
+          set(f, accepted_wide, has(f, trial_wide));
         }
-        if (!trial_wide.empty()) trial_wide[f] = 0;
-        in_call[f] = 0;
+        set(f, trial_wide, false), set(f, in_call, false);
       }
       called.clear();
     }
@@ -377,7 +376,6 @@ private:
   const Flat_mesh& m_;
   double tolerance_, limit_;
   Side output_, input_; // smoothed faces to the input; input faces to the smoothed surface
-  std::uint32_t stamp_ = 0;
   static constexpr unsigned char touched = 1;
   std::vector<unsigned char> vertex_flags_; // per vertex, in check(): touched (0 outside)
   std::vector<unsigned char> balanced_;     // per face: which of its edges are balanced
