@@ -30,6 +30,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -69,23 +70,40 @@ struct Face_candidates {
   void add_second_ring(const Flat_mesh& m, std::size_t f) {
     const auto& t = m.faces[f];
     // A face is listed already if it has a vertex of `f` (the first ring) or
-    // a neighbour visited before.
-    std::array<Index, 64> visited;
-    std::size_t k = 0;
-    auto seen = [&](Index u) {
-      return u == t[0] || u == t[1] || u == t[2] ||
-             std::find(visited.begin(), visited.begin() + std::ptrdiff_t(k), u) != visited.begin() + std::ptrdiff_t(k);
-    };
+    // a neighbour visited before (at most 64, kept in a small hash set).
+    Small_vertex_set visited;
+    auto seen = [&](Index u) { return u == t[0] || u == t[1] || u == t[2] || visited.contains(u); };
     for (Index v : t)
       for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w) {
-        if (seen(*w) || k == visited.size()) continue;
+        if (seen(*w) || visited.size == 64) continue;
         for (const Index* g = m.vertex_faces.first(*w); g != m.vertex_faces.last(*w) && n < capacity; ++g) {
           const auto& s = m.faces[*g];
           if (!seen(s[0]) && !seen(s[1]) && !seen(s[2])) face[n++] = *g;
         }
-        visited[k++] = *w;
+        visited.insert(*w);
       }
   }
+
+private:
+  // A set of at most 64 vertices: open addressing in 128 slots.
+  struct Small_vertex_set {
+    static constexpr Index empty = (std::numeric_limits<Index>::max)();
+    std::array<Index, 128> slot;
+    std::size_t size = 0;
+    Small_vertex_set() { slot.fill(empty); }
+    static std::size_t start(Index u) { return std::size_t((std::uint32_t(u) * 2654435761u) >> 25); }
+    bool contains(Index u) const {
+      for (std::size_t i = start(u);; i = (i + 1) & 127) {
+        if (slot[i] == u) return true;
+        if (slot[i] == empty) return false;
+      }
+    }
+    void insert(Index u) {
+      std::size_t i = start(u);
+      while (slot[i] != empty) i = (i + 1) & 127;
+      slot[i] = u, ++size;
+    }
+  };
 };
 
 class Fidelity_certificate {
@@ -286,7 +304,7 @@ private:
           accepted[f] = trial[f];
           set(f, accepted_wide, has(f, trial_wide));
         }
-        set(f, trial_wide, false), set(f, in_call, false);
+        set(f, trial_wide | in_call, false);
       }
       called.clear();
     }
