@@ -30,7 +30,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -70,12 +69,12 @@ struct Face_candidates {
   void add_second_ring(const Flat_mesh& m, std::size_t f) {
     const auto& t = m.faces[f];
     // A face is listed already if it has a vertex of `f` (the first ring) or
-    // a neighbour visited before (at most 64, kept in a small hash set).
+    // a neighbour visited before (at most Small_vertex_set::capacity).
     Small_vertex_set visited;
     auto seen = [&](Index u) { return u == t[0] || u == t[1] || u == t[2] || visited.contains(u); };
     for (Index v : t)
       for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w) {
-        if (seen(*w) || visited.size == 64) continue;
+        if (seen(*w) || visited.full()) continue;
         for (const Index* g = m.vertex_faces.first(*w); g != m.vertex_faces.last(*w) && n < capacity; ++g) {
           const auto& s = m.faces[*g];
           if (!seen(s[0]) && !seen(s[1]) && !seen(s[2])) face[n++] = *g;
@@ -85,22 +84,24 @@ struct Face_candidates {
   }
 
 private:
-  // A set of at most 64 vertices: open addressing in 128 slots.
+  // A set of at most `capacity` vertices: open addressing in twice as many slots.
   struct Small_vertex_set {
+    static constexpr std::size_t capacity = 64;
     static constexpr Index empty = (std::numeric_limits<Index>::max)();
-    std::array<Index, 128> slot;
+    std::array<Index, 2 * capacity> slot;
     std::size_t size = 0;
     Small_vertex_set() { slot.fill(empty); }
-    static std::size_t start(Index u) { return std::size_t((std::uint32_t(u) * 2654435761u) >> 25); }
+    bool full() const { return size == capacity; }
+    static std::size_t start(Index u) { return std::size_t((u * 2654435761u) >> 25); } // 7 bits: 2 * capacity slots
     bool contains(Index u) const {
-      for (std::size_t i = start(u);; i = (i + 1) & 127) {
+      for (std::size_t i = start(u);; i = (i + 1) & (2 * capacity - 1)) {
         if (slot[i] == u) return true;
         if (slot[i] == empty) return false;
       }
     }
     void insert(Index u) {
       std::size_t i = start(u);
-      while (slot[i] != empty) i = (i + 1) & 127;
+      while (slot[i] != empty) i = (i + 1) & (2 * capacity - 1);
       slot[i] = u, ++size;
     }
   };
