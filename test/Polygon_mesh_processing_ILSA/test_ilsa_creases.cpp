@@ -159,10 +159,12 @@ Outcome smooth(const Crease_mesh& cm, bool constrained_edges, const char* what, 
   for (std::size_t v : cm.crease) o.crease_moved += !(before[v] == after[v]);
   // The crease edges the deviation compares: with the map, the map's edges.
   auto original_creases = crease_map(cm, original);
-  const auto f = constrained_edges ? PMP::mesh_fidelity_ilsa(original, m,
-                                                             CGAL::parameters::edge_is_constrained_map(
-                                                                 boost::make_assoc_property_map(original_creases)))
-                                   : PMP::mesh_fidelity_ilsa(original, m);
+  const auto no_hausdorff = CGAL::parameters::ilsa_compute_hausdorff_distance(false); // (not checked here)
+  const auto f =
+      constrained_edges
+          ? PMP::mesh_fidelity_ilsa(
+                original, m, no_hausdorff.edge_is_constrained_map(boost::make_assoc_property_map(original_creases)))
+          : PMP::mesh_fidelity_ilsa(original, m, no_hausdorff);
   if (constrained_edges) assert(f.number_of_sharp_edges == cm.crease_edges.size());
   o.flipped = f.number_of_flipped_faces;
   o.crease_deviation = f.max_crease_deviation;
@@ -239,7 +241,8 @@ void test_kink_rule_and_crease_bound_alone() {
     Surface_mesh m = input;
     const auto paper = CGAL::parameters::ilsa_paper_variant(true);
     PMP::smooth_surface_mesh_ilsa(m, paper);
-    const double deviation = PMP::mesh_fidelity_ilsa(input, m, paper).max_crease_deviation;
+    const double deviation =
+        PMP::mesh_fidelity_ilsa(input, m, paper.ilsa_compute_hausdorff_distance(false)).max_crease_deviation;
     std::cout << "kink rule off: crease deviation " << deviation << std::endl;
     assert(deviation <= tolerance);
   }
@@ -265,7 +268,9 @@ template <class Mesh> void test_vertex_range() {
     if (held.count(v)) assert(before[v] == after[v]);
     crease_moved += !(before[v] == after[v]);
   }
-  const double deviation = PMP::mesh_fidelity_ilsa(original, m).max_crease_deviation;
+  const double deviation =
+      PMP::mesh_fidelity_ilsa(original, m, CGAL::parameters::ilsa_compute_hausdorff_distance(false))
+          .max_crease_deviation;
   std::cout << "vertex range: " << crease_moved << " crease vertices moved, crease deviation " << deviation
             << std::endl;
   assert(crease_moved > 0);
@@ -292,7 +297,8 @@ void test_two_sided_measure() {
   const double diagonal = bbox_diagonal(original);
   // The wedge's crease only (its cone has more edges with a small dihedral angle).
   auto creases = crease_map(cm, original);
-  const auto np = CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(creases));
+  const auto np = CGAL::parameters::edge_is_constrained_map(boost::make_assoc_property_map(creases))
+                      .ilsa_compute_hausdorff_distance(false);
   const auto f = PMP::mesh_fidelity_ilsa(original, cut, np);
   std::cout << "cut tip: crease deviation " << f.max_crease_deviation << ", expected " << expected / diagonal
             << std::endl;
