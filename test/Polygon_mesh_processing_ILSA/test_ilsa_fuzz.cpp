@@ -10,10 +10,13 @@
 //   of the cases the input has collapsed edges: its zero-area faces, opened
 //   again, may not be reversed against their neighbours), no face below
 //   the input's minimum aspect ratio or the quality floor, whichever is lower;
-//   with a finite fidelity tolerance, the input's sharp (or constrained) edges
-//   and the same edges of the result within it of each other, both ways (the
-//   distance of input vertices to the result is bounded per move, not
-//   globally: user manual, "Known Limitations");
+//   with a finite fidelity tolerance, the result and the input within it of
+//   each other, both ways: CGAL's bounded-error symmetric Hausdorff distance,
+//   as mesh_fidelity_ilsa() reports it, at most the tolerance plus its error
+//   bound (CGAL returns at least the error bound), and the bound
+//   ILSA_statistics reports at most the tolerance;
+//   and the input's sharp (or constrained) edges and the same edges of the
+//   result within it of each other, both ways;
 // - with projection: every vertex on the input surface, every ridge vertex on
 //   an input crease edge;
 // - the promises that hold per move, where the test can see what each move
@@ -442,7 +445,10 @@ int main() {
     }
     if (safety) {
       ok = ok && flipped_faces(original, m) == 0 && reversed == 0 && !collapsed && kept_minimum;
-      if (std::isfinite(tolerance)) ok = ok && f.max_crease_deviation <= tolerance + rounding;
+      if (std::isfinite(tolerance))
+        ok = ok && f.max_crease_deviation <= tolerance + rounding &&
+             f.hausdorff_distance <= tolerance + f.hausdorff_error + rounding &&
+             statistics.certified_distance <= tolerance;
     }
     if (project) ok = ok && f.max_vertex_distance <= 1e-9;
     // With projection, every ridge vertex on a crease edge of the input: an edge
@@ -606,7 +612,8 @@ int main() {
                 << use_range << ", vertex map " << use_vertex_map << ", edge map " << use_edge_map << ", relax "
                 << relax << "): flipped " << f.number_of_flipped_faces << ", collapsed edges " << collapsed_edges
                 << ", zero-area input faces opened reversed " << reversed << ", distance " << f.max_vertex_distance
-                << ", fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
+                << ", Hausdorff " << f.hausdorff_distance << " (ILSA's bound " << statistics.certified_distance
+                << "), fixed moved " << fixed_moved << ", non-finite " << non_finite << ", new degenerate " << collapsed
                 << ", min q " << before.min_aspect_ratio << " -> " << after.min_aspect_ratio << ", crease deviation "
                 << f.max_crease_deviation << ", parallel run identical " << same_in_parallel << ", same faces "
                 << same_faces << ", callback: stop after " << stop_after << ", " << callback_calls << " calls, "
