@@ -13,8 +13,8 @@
 //   with a finite fidelity tolerance, the result and the input within it of
 //   each other, both ways: CGAL's bounded-error symmetric Hausdorff distance,
 //   as mesh_fidelity_ilsa() reports it, at most the tolerance plus its error
-//   bound (CGAL returns at least the error bound), and the bound
-//   ILSA_statistics reports at most the tolerance;
+//   bound (CGAL's value is within that bound of the true distance), and the
+//   bound ILSA_statistics reports at most the tolerance;
 //   and the input's sharp (or constrained) edges and the same edges of the
 //   result within it of each other, both ways;
 // - with projection: every vertex on the input surface, every ridge vertex on
