@@ -22,6 +22,7 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FIDELITY_CERTIFICATE_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FIDELITY_CERTIFICATE_H
 
+#include <CGAL/assertions.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/distance_certificate.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
@@ -256,7 +257,10 @@ public:
     double worst = 0;
     for (const Side* side : {&output_, &input_})
       for (float b : side->accepted) worst = (std::max)(worst, double(b));
-    return worst;
+    // Each bound was at most the limit before it was rounded up to a float to
+    // be stored; that rounding can take the float above the limit.
+    CGAL_assertion(worst <= double(float_rounded_up(limit_)));
+    return (std::min)(worst, limit_);
   }
 
 private:
