@@ -445,11 +445,13 @@ int main() {
     }
     if (safety) {
       ok = ok && flipped_faces(original, m) == 0 && reversed == 0 && !collapsed && kept_minimum;
-      if (std::isfinite(tolerance)) ok = ok && f.max_crease_deviation <= tolerance + rounding;
-      // Without projection no distance is certified (user manual, "Guarantees").
-      if (std::isfinite(tolerance) && project)
-        ok = ok && f.hausdorff_distance <= tolerance + f.hausdorff_error + rounding &&
-             statistics.certified_distance <= tolerance;
+      if (std::isfinite(tolerance)) {
+        ok = ok && f.max_crease_deviation <= tolerance + rounding;
+        // Without projection no distance is certified (user manual, "Guarantees").
+        if (project)
+          ok = ok && f.hausdorff_distance <= tolerance + f.hausdorff_error + rounding &&
+               statistics.certified_distance <= tolerance;
+      }
     }
     if (project) ok = ok && f.max_vertex_distance <= 1e-9;
     // With projection, every ridge vertex on a crease edge of the input: an edge

@@ -85,24 +85,26 @@ struct Face_candidates {
   }
 
 private:
-  // A set of at most `capacity` vertices: open addressing in twice as many slots.
+  // A set of at most `capacity` vertices: open addressing in twice as many
+  // slots, a hash of `slot_bits` bits (Index is 32 bits wide).
   struct Small_vertex_set {
-    static constexpr std::size_t capacity = 64;
+    static constexpr unsigned slot_bits = 7;
+    static constexpr std::size_t slots = std::size_t(1) << slot_bits, capacity = slots / 2;
     static constexpr Index empty = (std::numeric_limits<Index>::max)();
-    std::array<Index, 2 * capacity> slot;
+    std::array<Index, slots> slot;
     std::size_t size = 0;
     Small_vertex_set() { slot.fill(empty); }
     bool full() const { return size == capacity; }
-    static std::size_t start(Index u) { return std::size_t((u * 2654435761u) >> 25); } // 7 bits: 2 * capacity slots
+    static std::size_t start(Index u) { return std::size_t(Index(u * 2654435761u) >> (32 - slot_bits)); }
     bool contains(Index u) const {
-      for (std::size_t i = start(u);; i = (i + 1) & (2 * capacity - 1)) {
+      for (std::size_t i = start(u);; i = (i + 1) & (slots - 1)) {
         if (slot[i] == u) return true;
         if (slot[i] == empty) return false;
       }
     }
     void insert(Index u) {
       std::size_t i = start(u);
-      while (slot[i] != empty) i = (i + 1) & (2 * capacity - 1);
+      while (slot[i] != empty) i = (i + 1) & (slots - 1);
       slot[i] = u, ++size;
     }
   };
