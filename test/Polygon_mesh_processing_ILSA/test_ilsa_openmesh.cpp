@@ -1,5 +1,6 @@
 // ILSA on an OpenMesh TriMesh_ArrayKernelT through CGAL's graph traits: the
-// same result as on a Surface_mesh, and the smoothing invariants.
+// same result as on a Surface_mesh, and the smoothing invariants (the
+// fidelity certificate among them).
 #include "ilsa_test_utils.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -8,6 +9,7 @@
 #include <CGAL/boost/graph/properties_TriMesh_ArrayKernelT.h>
 
 using namespace ilsa_test;
+namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
 
 struct Double_traits : public OpenMesh::DefaultTraits {
   typedef OpenMesh::Vec3d Point; // full precision, like the CGAL meshes
@@ -66,10 +68,18 @@ int main() {
   assert(difference <= 1e-12 * diagonal);
   assert(float_difference <= 1e-6 * diagonal);
 
+  // The fidelity certificate on this mesh type: CGAL's bounded-error distance
+  // (within hausdorff_error above the true one) and ILSA's bound within the
+  // default tolerance, up to the write-back of normalised coordinates.
   const auto f = PMP::mesh_fidelity_ilsa(original, om);
-  std::cout << "OpenMesh: flipped " << f.number_of_flipped_faces << ", max distance " << f.max_vertex_distance << "\n";
+  const double tolerance = ilsa::defaults::fidelity_tolerance;
+  std::cout << "OpenMesh: flipped " << f.number_of_flipped_faces << ", max distance " << f.max_vertex_distance
+            << ", Hausdorff " << f.hausdorff_distance << " (ILSA's bound " << s_om.certified_distance << ", tolerance "
+            << tolerance << ")\n";
   assert(f.number_of_flipped_faces == 0);
   assert(f.max_vertex_distance <= 1e-9);
+  assert(f.hausdorff_distance <= tolerance + f.hausdorff_error + 1e-12);
+  assert(s_om.certified_distance <= tolerance);
   assert(PMP::mesh_quality_ilsa(om).mean_aspect_ratio > PMP::mesh_quality_ilsa(original).mean_aspect_ratio);
   std::cout << "test_ilsa_openmesh: all checks passed\n";
   return 0;
