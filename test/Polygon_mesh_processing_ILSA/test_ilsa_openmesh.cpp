@@ -75,7 +75,7 @@ int main() {
   const double tolerance = ilsa::defaults::fidelity_tolerance;
   std::cout << "OpenMesh: flipped " << f.number_of_flipped_faces << ", max distance " << f.max_vertex_distance
             << ", Hausdorff " << f.hausdorff_distance << " (ILSA's bound " << s_om.certified_distance << ", tolerance "
-            << tolerance << ")\n";
+            << tolerance << ")" << std::endl; // flushed: an assertion below may abort
   assert(f.number_of_flipped_faces == 0);
   assert(f.max_vertex_distance <= 1e-9);
   assert(f.hausdorff_distance <= tolerance + f.hausdorff_error + 1e-12);
