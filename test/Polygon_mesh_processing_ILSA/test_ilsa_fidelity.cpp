@@ -6,7 +6,9 @@
 //   triangles or segments are upper bounds of the distances of densely
 //   sampled points, on random configurations, and so are those of the
 //   height route (height_bound()) over random height fields, some folded,
-//   some reaching past the triangle;
+//   some reaching past the triangle; triangles with coincident corners (the
+//   zero-area faces of collapsed edges) are at the distance of their edges,
+//   and both routes stay upper bounds over patches with a collapsed edge;
 // - the smoothed meshes stay within the fidelity tolerance of their input,
 //   both ways, as judged by CGAL's own bounded-error symmetric Hausdorff
 //   distance (is_Hausdorff_distance_larger(), error 1e-5 of the diagonal,
@@ -167,6 +169,108 @@ void test_height_bound_against_samples() {
   ILSA_CHECK(certified > 300 && far_points > 30);
 }
 
+// Triangles with coincident corners, as the collapsed edges of a mesh give
+// (zero-area faces): the distance to one is the distance to its edges, and
+// the certified bounds stay upper bounds when such triangles are among the
+// candidates (once the distance came out as NaN, which the bounds took for 0).
+void test_degenerate_candidates() {
+  std::mt19937 rng(20261208u);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  using Triangle = std::array<ilsa::Vec3, 3>;
+  auto point = [&](double s) { return ilsa::Vec3(s * unit(rng), s * unit(rng), s * unit(rng)); };
+  auto edges_distance = [](const ilsa::Vec3& x, const Triangle& t) {
+    return (std::min)({ilsa::squared_distance_to_segment(x, t[0], t[1]),
+                       ilsa::squared_distance_to_segment(x, t[1], t[2]),
+                       ilsa::squared_distance_to_segment(x, t[2], t[0])});
+  };
+  // The distance function: a corner moved onto the next one, all three
+  // corners at one point, or one on the segment between the others.
+  for (int c = 0; c < 5000; ++c) {
+    Triangle t{point(1), point(1), point(1)};
+    const int k = c % 5;
+    if (k < 3)
+      t[std::size_t(k)] = t[std::size_t(k + 1) % 3];
+    else if (k == 3)
+      t[1] = t[2] = t[0];
+    else
+      t[2] = 0.5 * (t[0] + t[1]);
+    const ilsa::Vec3 x = point(2);
+    const double d = ilsa::squared_distance_to_triangle(x, t[0], t[1], t[2]), e = edges_distance(x, t);
+    ILSA_CHECK(std::abs(d - e) <= 1e-12 * (1 + e));
+  }
+  // The reference distance of the samples below.
+  auto reference = [&](const ilsa::Vec3& x, const Triangle& t) {
+    const bool coincident = t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+    return coincident ? edges_distance(x, t) : ilsa::squared_distance_to_triangle(x, t[0], t[1], t[2]);
+  };
+  auto sampled = [&](const ilsa::Vec3& a, const ilsa::Vec3& b, const ilsa::Vec3& d, const std::vector<Triangle>& ts) {
+    double worst = 0;
+    const int n = 30;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const ilsa::Vec3 x = a + (double(i) / n) * (b - a) + (double(j) / n) * (d - a);
+        double best = std::numeric_limits<double>::infinity();
+        for (const Triangle& t : ts) best = (std::min)(best, reference(x, t));
+        worst = (std::max)(worst, std::sqrt(best));
+      }
+    return worst;
+  };
+  // A flat grid patch with one edge collapsed (its end moved onto its
+  // start), under a triangle lifted a little: both routes.
+  std::size_t certified = 0, height_certified = 0;
+  const int grid = 6;
+  for (int c = 0; c < 1000; ++c) {
+    std::vector<ilsa::Vec3> points;
+    for (int j = 0; j < grid; ++j)
+      for (int i = 0; i < grid; ++i)
+        points.push_back(ilsa::Vec3((i + 0.2 * unit(rng)) * 3. / (grid - 1) - 1.5,
+                                    (j + 0.2 * unit(rng)) * 3. / (grid - 1) - 1.5, 0.05 * unit(rng)));
+    std::vector<std::array<ilsa::Index, 3>> faces;
+    for (int j = 0; j + 1 < grid; ++j)
+      for (int i = 0; i + 1 < grid; ++i) {
+        const ilsa::Index v = ilsa::Index(j * grid + i);
+        faces.push_back({v, v + 1, v + ilsa::Index(grid) + 1});
+        faces.push_back({v, v + ilsa::Index(grid) + 1, v + ilsa::Index(grid)});
+      }
+    const std::array<ilsa::Index, 3>& collapsed = faces[std::size_t(double(faces.size()) * (unit(rng) + 1) / 2)];
+    const std::size_t corner = std::size_t(c % 3);
+    points[collapsed[(corner + 1) % 3]] = points[collapsed[corner]];
+    std::vector<Triangle> ts;
+    for (const auto& f : faces) ts.push_back({points[f[0]], points[f[1]], points[f[2]]});
+    auto candidate = [&](std::size_t k) { return ts[k]; };
+    auto cancelled = [&](std::size_t k, std::size_t i) {
+      const ilsa::Index u = faces[k][i], v = faces[k][(i + 1) % 3];
+      int net = 0;
+      for (const auto& f : faces)
+        for (std::size_t j = 0; j < 3; ++j)
+          net += int(f[j] == u && f[(j + 1) % 3] == v) - int(f[j] == v && f[(j + 1) % 3] == u);
+      return net == 0;
+    };
+    // The triangle has a corner at the collapsed point half the time.
+    auto near_patch = [&] { return ilsa::Vec3(1.2 * unit(rng), 1.2 * unit(rng), 0.05 * unit(rng)); };
+    const ilsa::Vec3 a = c % 2 == 0 ? points[collapsed[corner]] + ilsa::Vec3(0, 0, 0.02 * unit(rng)) : near_patch(),
+                     b = near_patch(), d = near_patch();
+    const double limit = 0.05 + 0.5 * std::abs(unit(rng));
+    const double bound = ilsa::triangle_bound(a, b, d, ts.size(), candidate, limit);
+    const double height = ilsa::height_bound(a, b, d, ts.size(), candidate, cancelled, limit);
+    if (!(bound <= limit) && !(height <= limit)) continue;
+    const double s = sampled(a, b, d, ts);
+    if (bound <= limit) {
+      ++certified;
+      ILSA_CHECK(bound >= s - 1e-12);
+    }
+    if (height <= limit) {
+      ++height_certified;
+      ILSA_CHECK(height >= s - 1e-12);
+    }
+  }
+  std::cout << "degenerate candidates: distances to 5000 degenerate triangles are those to their edges; " << certified
+            << " and " << height_certified
+            << " triangles certified of 1000 (pieces, heights) over patches with a collapsed edge, none below a sample"
+            << std::endl;
+  ILSA_CHECK(certified > 100 && height_certified > 100);
+}
+
 std::size_t max_faces() {
   const char* text = std::getenv("ILSA_FIDELITY_MAX_FACES");
   return text ? std::size_t(std::strtoull(text, nullptr, 10)) : std::numeric_limits<std::size_t>::max();
@@ -250,6 +354,7 @@ void test_meshes() {
 int main() {
   test_bounds_against_samples();
   test_height_bound_against_samples();
+  test_degenerate_candidates();
   test_meshes();
   std::cout << "test_ilsa_fidelity: OK" << std::endl;
   return 0;

@@ -115,7 +115,11 @@ inline double squared_distance_to_segment(const Vec3& p, const Vec3& a, const Ve
 }
 
 /// Squared distance from `p` to the triangle `abc` (closest-point regions as in
-/// Ericson, Real-Time Collision Detection, 5.1.5).
+/// Ericson, Real-Time Collision Detection, 5.1.5). The closest point it takes
+/// is always a point of the triangle, so that the distance is never below the
+/// true one by more than rounding (the fidelity certificate bounds distances
+/// from above with it); a triangle with coincident or collinear corners is
+/// taken as its edges.
 inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
@@ -123,21 +127,26 @@ inline double squared_distance_to_triangle(const Vec3& p, const Vec3& a, const V
   const Vec3 bp = p - b;
   const double d3 = ab.dot(bp), d4 = ac.dot(bp);
   if (d3 >= 0 && d4 <= d3) return bp.squaredNorm();
+  // The edge regions need the edge's squared length (d1 - d3, d2 - d6, and
+  // (d4 - d3) + (d5 - d6)) positive: a zero-length edge would give 0 / 0.
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (ap - (d1 / (d1 - d3)) * ab).squaredNorm();
+  if (vc <= 0 && d1 >= 0 && d3 <= 0 && d1 > d3) return (ap - (d1 / (d1 - d3)) * ab).squaredNorm();
   const Vec3 cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
   if (d6 >= 0 && d5 <= d6) return cp.squaredNorm();
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (ap - (d2 / (d2 - d6)) * ac).squaredNorm();
+  if (vb <= 0 && d2 >= 0 && d6 <= 0 && d2 > d6) return (ap - (d2 / (d2 - d6)) * ac).squaredNorm();
   const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0 && (d4 - d3) + (d5 - d6) > 0)
     return (bp - ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b)).squaredNorm();
   const double sum = va + vb + vc;
-  if (!(sum > 0)) // degenerate triangle: closest of its edges
+  const double v = vb / sum, w = vc / sum;
+  // Inside unless the triangle is degenerate (or rounding of a needle put
+  // the point outside): then the closest of its edges.
+  if (!(sum > 0 && v >= 0 && w >= 0 && v + w <= 1))
     return (std::min)({squared_distance_to_segment(p, a, b), squared_distance_to_segment(p, b, c),
                        squared_distance_to_segment(p, c, a)});
-  return (ap - (vb / sum) * ab - (vc / sum) * ac).squaredNorm();
+  return (ap - v * ab - w * ac).squaredNorm();
 }
 
 /// `x` as a float no smaller than `x` (rounded up), or no larger (rounded
