@@ -102,6 +102,32 @@ void test_bounds_against_samples() {
   ILSA_CHECK(certified > 200 && segments_certified > 200);
 }
 
+using Grid_face = std::array<ilsa::Index, 3>;
+
+// The faces of a grid of `grid` by `grid` points, numbered row by row: two
+// triangles per cell.
+std::vector<Grid_face> grid_faces(int grid) {
+  std::vector<Grid_face> faces;
+  for (int j = 0; j + 1 < grid; ++j)
+    for (int i = 0; i + 1 < grid; ++i) {
+      const ilsa::Index v = ilsa::Index(j * grid + i);
+      faces.push_back({v, v + 1, v + ilsa::Index(grid) + 1});
+      faces.push_back({v, v + ilsa::Index(grid) + 1, v + ilsa::Index(grid)});
+    }
+  return faces;
+}
+
+// Whether the edge from corner i to corner i + 1 of face k is cancelled by
+// the reverse edges of the other faces (height_bound()'s `cancelled`).
+bool is_cancelled(const std::vector<Grid_face>& faces, std::size_t k, std::size_t i) {
+  const ilsa::Index u = faces[k][i], v = faces[k][(i + 1) % 3];
+  int net = 0;
+  for (const Grid_face& f : faces)
+    for (std::size_t j = 0; j < 3; ++j)
+      net += int(f[j] == u && f[(j + 1) % 3] == v) - int(f[j] == v && f[(j + 1) % 3] == u);
+  return net == 0;
+}
+
 // The quicker bound over a height field: random grid patches (some folded,
 // some steep) under random triangles, some reaching past the patch: every
 // bound it finds is at least the distance of every sampled point, and every
@@ -118,24 +144,11 @@ void test_height_bound_against_samples() {
       for (int i = 0; i < grid; ++i)
         points.push_back(ilsa::Vec3((i + jitter * unit(rng) / 2) * 3. / (grid - 1) - 1.5,
                                     (j + jitter * unit(rng) / 2) * 3. / (grid - 1) - 1.5, height * unit(rng)));
-    std::vector<std::array<ilsa::Index, 3>> faces;
-    for (int j = 0; j + 1 < grid; ++j)
-      for (int i = 0; i + 1 < grid; ++i) {
-        const ilsa::Index v = ilsa::Index(j * grid + i);
-        faces.push_back({v, v + 1, v + ilsa::Index(grid) + 1});
-        faces.push_back({v, v + ilsa::Index(grid) + 1, v + ilsa::Index(grid)});
-      }
+    const std::vector<Grid_face> faces = grid_faces(grid);
     auto candidate = [&](std::size_t k) {
       return std::array<ilsa::Vec3, 3>{points[faces[k][0]], points[faces[k][1]], points[faces[k][2]]};
     };
-    auto cancelled = [&](std::size_t k, std::size_t i) {
-      const ilsa::Index u = faces[k][i], v = faces[k][(i + 1) % 3];
-      int net = 0;
-      for (const auto& f : faces)
-        for (std::size_t j = 0; j < 3; ++j)
-          net += int(f[j] == u && f[(j + 1) % 3] == v) - int(f[j] == v && f[(j + 1) % 3] == u);
-      return net == 0;
-    };
+    auto cancelled = [&](std::size_t k, std::size_t i) { return is_cancelled(faces, k, i); };
     const double reach = c % 4 == 0 ? 2. : 1.;
     auto corner = [&] { return ilsa::Vec3(reach * unit(rng), reach * unit(rng), 0.1 * unit(rng)); };
     const ilsa::Vec3 a = corner(), b = corner(), d = corner();
@@ -225,27 +238,14 @@ void test_degenerate_candidates() {
       for (int i = 0; i < grid; ++i)
         points.push_back(ilsa::Vec3((i + 0.2 * unit(rng)) * 3. / (grid - 1) - 1.5,
                                     (j + 0.2 * unit(rng)) * 3. / (grid - 1) - 1.5, 0.05 * unit(rng)));
-    std::vector<std::array<ilsa::Index, 3>> faces;
-    for (int j = 0; j + 1 < grid; ++j)
-      for (int i = 0; i + 1 < grid; ++i) {
-        const ilsa::Index v = ilsa::Index(j * grid + i);
-        faces.push_back({v, v + 1, v + ilsa::Index(grid) + 1});
-        faces.push_back({v, v + ilsa::Index(grid) + 1, v + ilsa::Index(grid)});
-      }
-    const std::array<ilsa::Index, 3>& collapsed = faces[std::size_t(double(faces.size()) * (unit(rng) + 1) / 2)];
+    const std::vector<Grid_face> faces = grid_faces(grid);
+    const Grid_face& collapsed = faces[std::size_t(double(faces.size()) * (unit(rng) + 1) / 2)];
     const std::size_t corner = std::size_t(c % 3);
     points[collapsed[(corner + 1) % 3]] = points[collapsed[corner]];
     std::vector<Triangle> ts;
     for (const auto& f : faces) ts.push_back({points[f[0]], points[f[1]], points[f[2]]});
     auto candidate = [&](std::size_t k) { return ts[k]; };
-    auto cancelled = [&](std::size_t k, std::size_t i) {
-      const ilsa::Index u = faces[k][i], v = faces[k][(i + 1) % 3];
-      int net = 0;
-      for (const auto& f : faces)
-        for (std::size_t j = 0; j < 3; ++j)
-          net += int(f[j] == u && f[(j + 1) % 3] == v) - int(f[j] == v && f[(j + 1) % 3] == u);
-      return net == 0;
-    };
+    auto cancelled = [&](std::size_t k, std::size_t i) { return is_cancelled(faces, k, i); };
     // The triangle has a corner at the collapsed point half the time.
     auto near_patch = [&] { return ilsa::Vec3(1.2 * unit(rng), 1.2 * unit(rng), 0.05 * unit(rng)); };
     const ilsa::Vec3 a = c % 2 == 0 ? points[collapsed[corner]] + ilsa::Vec3(0, 0, 0.02 * unit(rng)) : near_patch(),
