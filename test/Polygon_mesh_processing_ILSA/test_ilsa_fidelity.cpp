@@ -185,7 +185,7 @@ void test_height_bound_against_samples() {
 // Triangles with coincident corners, as the collapsed edges of a mesh give
 // (zero-area faces): the distance to one is the distance to its edges, and
 // the certified bounds stay upper bounds when such triangles are among the
-// candidates (once the distance came out as NaN, which the bounds took for 0).
+// candidates (a NaN distance would pass the bounds' comparisons as small).
 void test_degenerate_candidates() {
   std::mt19937 rng(20261208u);
   std::uniform_real_distribution<double> unit(-1., 1.);
