@@ -399,9 +399,10 @@ double height_bound(const Vec3& a, const Vec3& b, const Vec3& c, std::size_t n, 
   const double lo_y = triangle.lo_y - clearance, hi_y = triangle.hi_y + clearance;
   for (std::size_t k = 0; k < n; ++k)
     for (std::size_t i = 0; i < 3; ++i) {
+      if (cancelled(k, i)) continue;
       const Point2 &p = q[k][i], &r = q[k][(i + 1) % 3];
       if ((std::max)(p.x, r.x) < lo_x || (std::min)(p.x, r.x) > hi_x || (std::max)(p.y, r.y) < lo_y ||
-          (std::min)(p.y, r.y) > hi_y || cancelled(k, i))
+          (std::min)(p.y, r.y) > hi_y)
         continue;
       if (!clear.clear_of(p, r)) return inf;
     }

@@ -147,7 +147,9 @@ public:
   /// the accepted positions, to `next`) may have changed, and calls
   /// `blame(w)` for vertices a failed face depends on, in face order (the
   /// result does not depend on the threads); `blame(w)` returns whether the
-  /// move of `w` is shortened.
+  /// move of `w` is shortened. The smoothed faces are checked first; an input
+  /// face that depends on a vertex they shorten is left to the next call,
+  /// which the shortening brings about.
   template <class ConcurrencyTag, class Blame>
   void check(const std::vector<Vec3>& previous, const std::vector<Vec3>& next, const std::vector<Index>& changed,
              const Blame& blame) {
@@ -180,16 +182,44 @@ public:
       for (const Index* f = m_.vertex_faces.first(v); f != m_.vertex_faces.last(v); ++f)
         for (Index u : m_.faces[*f]) vertex_flags_[u] = 0;
     }
-    for (Side* side : {&output_, &input_}) side->failed.assign(side->checked.size(), 0);
+    for (Side* side : {&output_, &input_}) side->outcome.assign(side->checked.size(), Side::certified);
     parallel_for<ConcurrencyTag>(output_.checked.size(), [&](std::size_t i) {
       const std::size_t f = output_.checked[i];
       double drift = 0;
       for (Index w : m_.faces[f]) drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm());
-      output_.failed[i] =
-          !output_.certify(f, std::sqrt(drift), limit_, [&](bool&) { return output_distance(next, f); });
+      output_.outcome[i] = output_.certify(f, std::sqrt(drift), limit_, [&](bool&) { return output_distance(next, f); })
+                               ? Side::certified
+                               : Side::failed;
     });
+    // The smoothed faces that fail shorten the moves of their vertices first.
+    // An input face that depends on such a vertex (one of its own or a
+    // neighbour of them) is deferred: the shortening changes its candidates,
+    // so the next round of the safety check measures it at the new positions
+    // (user manual, "Safety Check").
+    shortened_.clear();
+    for (std::size_t i = 0; i < output_.checked.size(); ++i)
+      if (output_.outcome[i] == Side::failed) {
+        for (Index w : m_.faces[output_.checked[i]])
+          if (blame(w) && !(vertex_flags_[w] & being_shortened)) {
+            vertex_flags_[w] |= being_shortened;
+            shortened_.push_back(w);
+          }
+      }
+    auto deferred = [&](std::size_t t) {
+      if (shortened_.empty()) return false;
+      for (Index v : m_.faces[t]) {
+        if (vertex_flags_[v] & being_shortened) return true;
+        for (const Index* w = m_.vertex_neighbors.first(v); w != m_.vertex_neighbors.last(v); ++w)
+          if (vertex_flags_[*w] & being_shortened) return true;
+      }
+      return false;
+    };
     parallel_for<ConcurrencyTag>(input_.checked.size(), [&](std::size_t i) {
       const std::size_t t = input_.checked[i];
+      if (deferred(t)) {
+        input_.outcome[i] = Side::deferred;
+        return;
+      }
       // The largest move of a vertex the bound depends on: those of the
       // candidates, the faces around the vertices of `t` (their neighbours),
       // and for a bound found against the second ring, the faces around these.
@@ -205,7 +235,7 @@ public:
           std::for_each(m_.vertex_neighbors.first(v), m_.vertex_neighbors.last(v), grow);
         }
       }
-      input_.failed[i] = !input_.certify(t, std::sqrt(drift), limit_, [&](bool& wide) {
+      const bool certified = input_.certify(t, std::sqrt(drift), limit_, [&](bool& wide) {
         // The first ring, and if that fails the second ring too (smoothed
         // vertices slide on the input, along a crease sometimes farther than
         // the first ring of the input face reaches).
@@ -220,16 +250,14 @@ public:
         if (has_far && !near_any(far, candidates, near, next)) return b;
         return input_distance(next, t, candidates);
       });
+      input_.outcome[i] = certified ? Side::certified : Side::failed;
     });
-    for (std::size_t i = 0; i < output_.checked.size(); ++i)
-      if (output_.failed[i]) {
-        for (Index w : m_.faces[output_.checked[i]]) blame(w);
-      }
+    for (Index w : shortened_) vertex_flags_[w] = 0;
     // An input face that fails shortens the moves of its own vertices first:
     // the smoothed faces around them are its candidates; only when none of them
     // can be shortened, those of the other vertices it depends on.
     for (std::size_t i = 0; i < input_.checked.size(); ++i) {
-      if (!input_.failed[i]) continue;
+      if (input_.outcome[i] != Side::failed) continue;
       const std::size_t t = input_.checked[i];
       bool blamed = false;
       for (Index w : m_.faces[t]) blamed = blame(w) || blamed;
@@ -272,7 +300,10 @@ private:
     std::vector<float> trial;           // a bound at the positions of the face's last check, if it passed
     std::vector<unsigned char> flags;   // per face: the flags below
     std::vector<Index> checked, called; // the faces of the current check; those listed since the last accept()
-    std::vector<unsigned char> failed;  // per face of `checked`
+    // Per face of `checked`: certified, failed, or deferred to the next round
+    // (an input face that depends on a vertex whose move is shortened).
+    enum Outcome : unsigned char { certified, failed, deferred };
+    std::vector<Outcome> outcome;
     // The flags of a face: listed by the current check; listed since the last
     // accept(); (input faces) whether the accepted bound, or the trial one, was
     // found against the second ring of candidates too (Face_candidates::add_second_ring()).
@@ -401,8 +432,9 @@ private:
   const Flat_mesh& m_;
   double tolerance_, limit_;
   Side output_, input_; // smoothed faces to the input; input faces to the smoothed surface
-  static constexpr unsigned char touched = 1;
-  std::vector<unsigned char> vertex_flags_; // per vertex, in check(): touched (0 outside)
+  static constexpr unsigned char touched = 1, being_shortened = 2;
+  std::vector<unsigned char> vertex_flags_; // per vertex, in check(): touched, being_shortened (0 outside)
+  std::vector<Index> shortened_;            // in check(): the vertices whose moves the smoothed faces shorten
   std::vector<unsigned char> balanced_;     // per face: which of its edges are balanced
 };
 
