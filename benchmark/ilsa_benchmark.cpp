@@ -8,6 +8,7 @@
 //   ilsa_benchmark --phases [--runs N] [--peer-iterations N] [MESH ...]
 //   ilsa_benchmark --crease-sets [MESH ...]
 //   ilsa_benchmark --decisions [MESH ...]
+//   ilsa_benchmark --processes [--runs N] [MESH ...]
 //
 // Without meshes: every bundled mesh, plus ../shared/data when it exists.
 // Prints one Markdown table row per (mesh, method): quality (aspect ratio q
@@ -16,7 +17,12 @@
 // the input's sharp edges and the same edges of the result, max and mean;
 // distances relative to the bounding-box diagonal),
 // the median wall time of N runs (the methods take turns, run by run), and
-// ILSA's time over the peer's.
+// ILSA's time over the peer's; then the times of ILSA, tangential relaxation
+// (TR) and TR + projection (each of its iterations followed by moving every
+// vertex to its closest point on the input) as ratios, with their sums.
+// --processes prints instead that time table with each method run in a child
+// process of its own (the time of the smoothing call), the methods taking
+// turns, median of N runs.
 // --scaling N prints instead the scaling table: the horse Loop-subdivided 0
 // to N times and perturbed, time per face and peak memory of ILSA and CGAL
 // tangential relaxation, each run once in a child process of its own; then
@@ -84,6 +90,9 @@ using CGAL::Polygon_mesh_processing::internal::ILSA::AABB_tree_3;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 using edge_descriptor = boost::graph_traits<Mesh>::edge_descriptor;
 
+// Reads the triangle mesh `file` into `input` (defined below main's helpers).
+bool read_input(const std::string& file, Mesh& input);
+
 namespace {
 
 // Feature angle shared by every method, between face normals: ILSA's default
@@ -130,6 +139,22 @@ double peak_memory_mb() {
   return 0;
 }
 
+// CGAL tangential relaxation kept on the input surface, as a CGAL user writes
+// it (the smoothing step of isotropic_remeshing() with projection): each of
+// the `iterations` iterations of tangential_relaxation() is followed by moving
+// every vertex to its closest point on the input, found with an AABB tree of
+// a copy of the input built once (its time included).
+void tangential_relaxation_projected(Mesh& m, unsigned iterations) {
+  using Tree = AABB_tree_3<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>;
+  const Mesh input = m;
+  Tree tree(faces(input).first, faces(input).second, input);
+  tree.accelerate_distance_queries();
+  for (unsigned i = 0; i < iterations; ++i) {
+    PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(1));
+    for (auto v : vertices(m)) m.point(v) = tree.closest_point(m.point(v));
+  }
+}
+
 // One measurement of the scaling table, in a process of its own so that its
 // peak memory is its own: "load" reads the mesh and builds one AABB tree over
 // its faces; the others read it and smooth it. Prints seconds, peak MB and
@@ -152,6 +177,8 @@ int run_child(const std::string& mode, const std::string& file) {
 #endif
   else if (mode == "tangential")
     PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(10)), iterations = 10;
+  else if (mode == "tangential-projected")
+    tangential_relaxation_projected(m, 10), iterations = 10;
   else
     return 1;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -253,6 +280,63 @@ void run_scaling(const std::string& self, unsigned max_level) {
   // The same horse with its vertices and faces listed in a random order: the
   // cost of an input whose order has no locality.
   measure(shuffled(subdivided_horse(0)), "horse, perturbed, shuffled order", "shuffled");
+}
+
+// One row of the time tables: the median times of ILSA, tangential
+// relaxation and tangential relaxation with projection on one mesh.
+struct Time_row {
+  std::string mesh;
+  std::size_t faces = 0;
+  double ilsa = 0, tangential = 0, projected = 0;
+};
+
+// The time table: the rows, their ratios, and the sums over the rows.
+void print_time_table(const std::vector<Time_row>& rows) {
+  std::cout << "\n| mesh | faces | ILSA s | TR s | TR + projection s | ILSA / TR | ILSA / (TR + projection) |\n"
+               "|---|---|---|---|---|---|---|\n";
+  Time_row sum{"**sum**"};
+  for (const Time_row& r : rows) {
+    std::printf("| %s | %zu | %.3f | %.3f | %.3f | %.2f | %.2f |\n", r.mesh.c_str(), r.faces, r.ilsa, r.tangential,
+                r.projected, r.ilsa / r.tangential, r.ilsa / r.projected);
+    sum.faces += r.faces, sum.ilsa += r.ilsa, sum.tangential += r.tangential, sum.projected += r.projected;
+  }
+  if (rows.size() > 1)
+    std::printf("| %s | %zu | %.3f | %.3f | %.3f | %.2f | %.2f |\n", sum.mesh.c_str(), sum.faces, sum.ilsa,
+                sum.tangential, sum.projected, sum.ilsa / sum.tangential, sum.ilsa / sum.projected);
+  std::fflush(stdout);
+}
+
+// The --processes table: ILSA with every default, tangential relaxation (10
+// iterations) and tangential relaxation with projection (10 iterations),
+// each run in a child process of its own (the time of the smoothing call,
+// reading left out), the three taking turns, `runs` runs each; medians.
+void run_processes(const std::string& self, const std::vector<std::string>& files, int runs) {
+  std::vector<Time_row> rows;
+  const std::vector<std::string> modes{"ilsa", "tangential", "tangential-projected"};
+  for (const std::string& file : files) {
+    Mesh input;
+    if (!read_input(file, input)) continue;
+    std::vector<std::vector<double>> samples(modes.size());
+    for (int r = 0; r < runs; ++r)
+      for (std::size_t k = 0; k < modes.size(); ++k) {
+        FILE* child = popen(("\"" + self + "\" --child " + modes[k] + " \"" + file + "\"").c_str(), "r");
+        double seconds = 0, peak = 0;
+        std::size_t iterations = 0;
+        const bool ok = child && std::fscanf(child, "%lf %lf %zu", &seconds, &peak, &iterations) == 3;
+        if (child) pclose(child);
+        if (!ok) {
+          std::cerr << "processes: " << modes[k] << " on " << file << " failed\n";
+          return;
+        }
+        samples[k].push_back(seconds);
+      }
+    rows.push_back({std::filesystem::path(file).filename().string(), std::size_t(num_faces(input)), median(samples[0]),
+                    median(samples[1]), median(samples[2])});
+  }
+  std::cout << "Each method in a process of its own, one thread, the methods taking turns; median of " << runs
+            << " runs; TR: CGAL tangential_relaxation, 10 iterations; TR + projection: the same, each iteration "
+               "followed by the closest point on the input (AABB tree)\n";
+  print_time_table(rows);
 }
 
 } // namespace
@@ -502,7 +586,7 @@ int main(int argc, char** argv) {
   int scaling = -1;     // --scaling N: the scaling table up to N subdivisions, and nothing else
   int write_level = -1; // --write-scaling-mesh N FILE
   std::string write_file;
-  bool pareto = false, phases = false, crease_sets = false, decisions = false;
+  bool pareto = false, phases = false, crease_sets = false, decisions = false, processes = false;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -521,6 +605,8 @@ int main(int argc, char** argv) {
       crease_sets = true;
     else if (a == "--decisions")
       decisions = true;
+    else if (a == "--processes")
+      processes = true;
     else if (a == "--peer-iterations" && i + 1 < argc)
       peer_iterations = unsigned(std::max(1, std::atoi(argv[++i])));
     else
@@ -537,6 +623,10 @@ int main(int argc, char** argv) {
   if (files.empty()) files = default_meshes();
   if (pareto) {
     run_pareto(files, peer_iterations);
+    return 0;
+  }
+  if (processes) {
+    run_processes(argv[0], files, runs);
     return 0;
   }
   if (phases) {
@@ -565,6 +655,7 @@ int main(int argc, char** argv) {
                "time per iteration s | iterations run |\n"
             << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
+  std::vector<Time_row> time_rows;
   for (const std::string& file : files) {
     Mesh input;
     if (!read_input(file, input)) continue;
@@ -613,6 +704,10 @@ int main(int argc, char** argv) {
                          PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(peer_iterations));
                          return std::size_t(peer_iterations);
                        }});
+    methods.push_back({"CGAL tangential relaxation + projection", [&](Mesh& m) {
+                         tangential_relaxation_projected(m, peer_iterations);
+                         return std::size_t(peer_iterations);
+                       }});
     methods.push_back({"CGAL tangential relaxation + sharp edges", [&](Mesh& m) {
                          auto ecm = with_constraints(m);
                          PMP::tangential_relaxation(m, CGAL::parameters::number_of_iterations(peer_iterations)
@@ -641,6 +736,13 @@ int main(int argc, char** argv) {
         if (r == 0) results[k] = m;
       }
     for (std::size_t k = 0; k < methods.size(); ++k) times[k] = median(samples[k]);
+    auto time_of = [&](const std::string& method) {
+      for (std::size_t k = 0; k < methods.size(); ++k)
+        if (methods[k].name == method) return times[k];
+      return 0.;
+    };
+    time_rows.push_back({name, std::size_t(num_faces(input)), times[0], time_of("CGAL tangential relaxation"),
+                         time_of("CGAL tangential relaxation + projection")});
     for (std::size_t k = 0; k < methods.size(); ++k) {
       Mesh& m = results[k];
       const auto q = PMP::mesh_quality_ilsa(m);
@@ -655,5 +757,8 @@ int main(int argc, char** argv) {
     }
     std::fflush(stdout);
   }
+  std::cout << "\nTimes of the table above (medians, one process): ILSA with every default, TR = CGAL tangential "
+               "relaxation, TR + projection = CGAL tangential relaxation + projection\n";
+  print_time_table(time_rows);
   return 0;
 }
