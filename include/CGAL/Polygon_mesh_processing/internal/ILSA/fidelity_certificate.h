@@ -48,8 +48,8 @@ struct Face_candidates {
   std::size_t n = 0;
   bool complete = true; // every face around the vertices of `f` is listed
 
-  Face_candidates(const Flat_mesh& m, std::size_t f) {
-    const auto& t = m.faces[f];
+  Face_candidates(const Flat_mesh& m, std::size_t f) : own_(m.faces[f]) {
+    const auto& t = own_;
     face[n++] = Index(f);
     // A face around t[k] that has an earlier vertex of `f` was listed with it.
     for (std::size_t k = 0; k < 3; ++k)
@@ -67,21 +67,39 @@ struct Face_candidates {
   }
 
   /// Adds the faces around the neighbours of the vertices of `f`.
-  void add_second_ring(const Flat_mesh& m, std::size_t f) {
-    const auto& t = m.faces[f];
+  void add_second_ring(const Flat_mesh& m) {
+    const auto& t = own_;
     // A face is listed already if it has a vertex of `f` (the first ring) or
     // a neighbour visited before (at most Small_vertex_set::capacity).
-    Small_vertex_set visited;
-    auto seen = [&](Index u) { return u == t[0] || u == t[1] || u == t[2] || visited.contains(u); };
+    visited_.clear();
+    second_ring_closed_ = complete;
+    auto seen = [&](Index u) { return u == t[0] || u == t[1] || u == t[2] || visited_.contains(u); };
     for (Index v : t)
       for (const Index* w = m.vertex_neighbors.first(v); w != m.vertex_neighbors.last(v); ++w) {
-        if (seen(*w) || visited.full()) continue;
-        for (const Index* g = m.vertex_faces.first(*w); g != m.vertex_faces.last(*w) && n < capacity; ++g) {
+        if (seen(*w) || visited_.full()) continue;
+        for (const Index* g = m.vertex_faces.first(*w); g != m.vertex_faces.last(*w); ++g) {
           const auto& s = m.faces[*g];
-          if (!seen(s[0]) && !seen(s[1]) && !seen(s[2])) face[n++] = *g;
+          if (seen(s[0]) || seen(s[1]) || seen(s[2])) continue;
+          if (n == capacity) {
+            second_ring_closed_ = false;
+            break;
+          }
+          face[n++] = *g;
         }
-        visited.insert(*w);
+        visited_.insert(*w);
       }
+  }
+
+  /// Lists the first `first` faces only (the first ring, before add_second_ring()).
+  void drop_second_ring(std::size_t first) { n = first, second_ring_closed_ = false; }
+
+  /// Whether every face around vertex `u` is listed: `u` is a vertex of `f`
+  /// (the first ring being complete) or a neighbour of one whose faces the
+  /// second ring lists (none left out for the capacity).
+  bool lists_every_face_around(Index u) const {
+    if (!complete) return false;
+    if (u == own_[0] || u == own_[1] || u == own_[2]) return true;
+    return second_ring_closed_ && visited_.contains(u);
   }
 
 private:
@@ -93,7 +111,7 @@ private:
     static constexpr Index empty = (std::numeric_limits<Index>::max)();
     std::array<Index, slots> slot;
     std::size_t size = 0;
-    Small_vertex_set() { slot.fill(empty); }
+    void clear() { slot.fill(empty), size = 0; }
     bool full() const { return size == capacity; }
     static std::size_t start(Index u) { return std::size_t(Index(u * 2654435761u) >> (32 - slot_bits)); }
     bool contains(Index u) const {
@@ -108,6 +126,9 @@ private:
       slot[i] = u, ++size;
     }
   };
+  std::array<Index, 3> own_;        // the vertices of `f`
+  Small_vertex_set visited_;        // the neighbours whose faces the second ring lists (set by add_second_ring())
+  bool second_ring_closed_ = false; // the second ring is listed, with every face around the neighbours visited
 };
 
 class Fidelity_certificate {
@@ -187,9 +208,10 @@ public:
       const std::size_t f = output_.checked[i];
       double drift = 0;
       for (Index w : m_.faces[f]) drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm());
-      output_.outcome[i] = output_.certify(f, std::sqrt(drift), limit_, [&](bool&) { return output_distance(next, f); })
-                               ? Side::certified
-                               : Side::failed;
+      output_.outcome[i] =
+          output_.certify(f, std::sqrt(drift), limit_, [&](bool& wide) { return ring_bound(next, m_.points, f, wide); })
+              ? Side::certified
+              : Side::failed;
     });
     // The smoothed faces that fail shorten the moves of their vertices first.
     // An input face that depends on such a vertex (one of its own or a
@@ -227,7 +249,7 @@ public:
       auto grow = [&](std::size_t w) { drift = (std::max)(drift, (next[w] - previous[w]).squaredNorm()); };
       if (input_.has(t, Side::accepted_wide)) {
         Face_candidates candidates(m_, t);
-        candidates.add_second_ring(m_, t);
+        candidates.add_second_ring(m_);
         for_each_dependency(candidates, grow);
       } else {
         for (Index v : m_.faces[t]) {
@@ -235,21 +257,8 @@ public:
           std::for_each(m_.vertex_neighbors.first(v), m_.vertex_neighbors.last(v), grow);
         }
       }
-      const bool certified = input_.certify(t, std::sqrt(drift), limit_, [&](bool& wide) {
-        // The first ring, and if that fails the second ring too (smoothed
-        // vertices slide on the input, along a crease sometimes farther than
-        // the first ring of the input face reaches).
-        Face_candidates candidates(m_, t);
-        const std::size_t near = candidates.n;
-        Vec3 far;
-        bool has_far = false;
-        const double b = input_distance(next, t, candidates, &far, &has_far);
-        wide = !(b <= limit_);
-        if (!wide) return b;
-        candidates.add_second_ring(m_, t);
-        if (has_far && !near_any(far, candidates, near, next)) return b;
-        return input_distance(next, t, candidates);
-      });
+      const bool certified =
+          input_.certify(t, std::sqrt(drift), limit_, [&](bool& wide) { return ring_bound(m_.points, next, t, wide); });
       input_.outcome[i] = certified ? Side::certified : Side::failed;
     });
     for (Index w : shortened_) vertex_flags_[w] = 0;
@@ -265,7 +274,7 @@ public:
       Face_candidates candidates(m_, t);
       for_each_dependency(candidates, [&](std::size_t w) { blamed = blame(w) || blamed; });
       if (blamed) continue;
-      candidates.add_second_ring(m_, t);
+      candidates.add_second_ring(m_);
       for_each_dependency(candidates, blame);
     }
   }
@@ -348,20 +357,19 @@ private:
     }
   };
 
-  // Per candidate of face f (among the faces around its vertices), a bit per
-  // edge (from corner i to corner i + 1): whether the edge is cancelled by the
-  // reverse edges of the others. It is when it has a vertex of f, so that
-  // every face that has it is among the candidates when they are complete,
+  // Per candidate, a bit per edge (from corner i to corner i + 1): whether the
+  // edge is cancelled by the reverse edges of the others. It is when it has a
+  // vertex whose faces are all candidates (a vertex of the face, or of the
+  // second ring's neighbours), so that every face that has it is a candidate,
   // and the mesh's faces balance it.
-  void cancelled_edges(std::size_t f, const Face_candidates& candidates,
+  void cancelled_edges(const Face_candidates& candidates,
                        std::array<unsigned char, Face_candidates::capacity>& cancelled) const {
-    const auto& t = m_.faces[f];
     for (std::size_t k = 0; k < candidates.n; ++k) {
       const auto& s = m_.faces[candidates.face[k]];
-      unsigned corners = 0; // those that are vertices of f
-      for (std::size_t i = 0; i < 3; ++i) corners |= unsigned(s[i] == t[0] || s[i] == t[1] || s[i] == t[2]) << i;
+      unsigned corners = 0; // those whose faces are all candidates
+      for (std::size_t i = 0; i < 3; ++i) corners |= unsigned(candidates.lists_every_face_around(s[i])) << i;
       const unsigned near = corners | corners >> 1 | (corners & 1) << 2; // edge i: corner i or i + 1
-      cancelled[k] = candidates.complete ? static_cast<unsigned char>(near & balanced_[candidates.face[k]]) : 0;
+      cancelled[k] = static_cast<unsigned char>(near & balanced_[candidates.face[k]]);
     }
   }
 
@@ -370,25 +378,50 @@ private:
       for (Index w : m_.faces[candidates.face[k]]) f(w);
   }
 
-  // Smoothed face `f` at `pos` against the input faces around its vertices,
-  // and if that fails, also around their neighbours (smoothed vertices slide
-  // on the input, along a crease sometimes farther than their first ring).
-  double output_distance(const std::vector<Vec3>& pos, std::size_t f) const {
-    Face_candidates candidates(m_, f);
-    Vec3 far;
-    bool has_far = false;
-    const double near = output_distance(pos, f, candidates, &far, &has_far);
-    if (near <= limit_) return near;
-    const std::size_t first = candidates.n;
-    candidates.add_second_ring(m_, f);
-    // A point farther than the tolerance from every candidate of the first
-    // ring and of the second: no certificate against them exists.
-    if (has_far && !near_any(far, candidates, first, m_.points)) return near;
-    return output_distance(pos, f, candidates);
+  // The corners of candidate k at `at`.
+  auto corners_of(const Face_candidates& candidates, const std::vector<Vec3>& at) const {
+    return [this, &candidates, &at](std::size_t k) {
+      const auto& s = m_.faces[candidates.face[k]];
+      return std::array<Vec3, 3>{at[s[0]], at[s[1]], at[s[2]]};
+    };
   }
-  double output_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
-                         Vec3* far = nullptr, bool* has_far = nullptr) const {
-    return face_bound(pos, f, candidates, m_.points, far, has_far);
+
+  // Face `f` with its corners at `corners` against the faces around its
+  // vertices with theirs at `at` (the first ring), and where these cannot
+  // certify it, also the faces around their neighbours (the second ring; then
+  // `wide` is set): smoothed vertices slide on the input, along a crease
+  // sometimes farther than the first ring reaches. The routes in the order of
+  // their cost: the height route on the first ring, then on the second, then
+  // the piece route on the first and on the second (distance_certificate.h).
+  // A point farther than the limit from every candidate of both rings ends
+  // the search: no certificate against them exists.
+  double ring_bound(const std::vector<Vec3>& corners, const std::vector<Vec3>& at, std::size_t f, bool& wide) const {
+    Face_candidates candidates(m_, f);
+    const std::size_t first = candidates.n;
+    Vec3 far;
+    bool has_far = false, second_heights = false;
+    wide = false;
+    double b = height_route(corners, f, candidates, at, &far, &has_far);
+    if (b <= limit_) return b;
+    if (!has_far) {
+      candidates.add_second_ring(m_);
+      wide = second_heights = true;
+      b = height_route(corners, f, candidates, at, &far, &has_far);
+      if (b <= limit_ || has_far) return b;
+      candidates.drop_second_ring(first);
+      wide = false;
+      b = piece_route(corners, f, candidates, at, &far, &has_far);
+      if (b <= limit_) return b;
+    }
+    candidates.add_second_ring(m_);
+    wide = true;
+    if (has_far && !near_any(far, candidates, first, at)) return b;
+    if (!second_heights) {
+      has_far = false;
+      b = height_route(corners, f, candidates, at, &far, &has_far);
+      if (b <= limit_ || has_far) return b;
+    }
+    return piece_route(corners, f, candidates, at);
   }
   // Whether `x` is within the limit of one of the candidates from `first` on, at `at`.
   bool near_any(const Vec3& x, const Face_candidates& candidates, std::size_t first,
@@ -399,36 +432,23 @@ private:
     }
     return false;
   }
-  // Input face `f` against the smoothed faces (at `pos`) around its vertices.
-  double input_distance(const std::vector<Vec3>& pos, std::size_t f, const Face_candidates& candidates,
-                        Vec3* far = nullptr, bool* has_far = nullptr) const {
-    return face_bound(m_.points, f, candidates, pos, far, has_far);
-  }
   // Face `f` with its corners at `corners` against the candidates with theirs
-  // at `at`: the height route, then, unless it found a point too far from
-  // every candidate, the piece route (distance_certificate.h).
-  double face_bound(const std::vector<Vec3>& corners, std::size_t f, const Face_candidates& candidates,
-                    const std::vector<Vec3>& at, Vec3* far, bool* has_far) const {
+  // at `at`, by the height route and by the piece route (distance_certificate.h).
+  double height_route(const std::vector<Vec3>& corners, std::size_t f, const Face_candidates& candidates,
+                      const std::vector<Vec3>& at, Vec3* far, bool* has_far) const {
     const auto& t = m_.faces[f];
-    auto candidate = [&](std::size_t k) {
-      const auto& s = m_.faces[candidates.face[k]];
-      return std::array<Vec3, 3>{at[s[0]], at[s[1]], at[s[2]]};
-    };
     std::array<unsigned char, Face_candidates::capacity> cancelled;
-    cancelled_edges(f, candidates, cancelled);
-    Vec3 quick_far;
-    bool quick_has_far = false;
-    const double quick = height_bound(
-        corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, candidate,
-        [&](std::size_t k, std::size_t i) { return (cancelled[k] >> i & 1) != 0; }, limit_, &quick_far, &quick_has_far);
-    if (quick <= limit_) return quick;
-    if (quick_has_far) {
-      if (far) *far = quick_far, *has_far = true;
-      return quick;
-    }
-    return triangle_bound(corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, candidate, limit_, far, has_far);
+    cancelled_edges(candidates, cancelled);
+    return height_bound(
+        corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, corners_of(candidates, at),
+        [&](std::size_t k, std::size_t i) { return (cancelled[k] >> i & 1) != 0; }, limit_, far, has_far);
   }
-
+  double piece_route(const std::vector<Vec3>& corners, std::size_t f, const Face_candidates& candidates,
+                     const std::vector<Vec3>& at, Vec3* far = nullptr, bool* has_far = nullptr) const {
+    const auto& t = m_.faces[f];
+    return triangle_bound(corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, corners_of(candidates, at), limit_,
+                          far, has_far);
+  }
   const Flat_mesh& m_;
   double tolerance_, limit_;
   Side output_, input_; // smoothed faces to the input; input faces to the smoothed surface
