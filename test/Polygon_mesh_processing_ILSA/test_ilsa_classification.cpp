@@ -103,7 +103,7 @@ template <class Mesh> void test_fandisk() {
     const Point& x = get(CGAL::vertex_point, m, v);
     const double c =
         (ends[0] - x) * (ends[1] - x) / std::sqrt((ends[0] - x).squared_length() * (ends[1] - x).squared_length());
-    assert(c > std::cos(160. * 3.14159265358979323846 / 180.)); // the edges meet at less than 160 degrees
+    assert(c > std::cos(160. * CGAL_PI / 180.)); // the edges meet at less than 160 degrees
   }
 }
 

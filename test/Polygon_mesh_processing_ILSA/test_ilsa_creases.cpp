@@ -17,7 +17,7 @@ using namespace ilsa_test;
 namespace {
 
 using P2 = K::Point_2;
-const double pi = 3.14159265358979323846;
+const double pi = CGAL_PI;
 // The default fidelity tolerance, of the bounding-box diagonal, and the rounding of the write-back.
 const double tolerance = PMP::internal::ILSA::defaults::fidelity_tolerance + 1e-12;
 

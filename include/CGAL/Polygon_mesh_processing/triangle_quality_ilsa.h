@@ -11,6 +11,7 @@
 #define CGAL_POLYGON_MESH_PROCESSING_TRIANGLE_QUALITY_ILSA_H
 
 #include <CGAL/config.h>
+#include <CGAL/number_type_config.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -71,8 +72,7 @@ template <class P> Triangle_shape triangle_shape_with_angle(const P& p0, const P
   for (int i = 0; i < 3; ++i) {
     const auto a = difference(v[(i + 1) % 3], v[i]), b = difference(v[(i + 2) % 3], v[i]);
     const auto axb = cross_product(a, b);
-    const double angle =
-        std::atan2(std::sqrt(dot_product(axb, axb)), dot_product(a, b)) * 180. / 3.14159265358979323846;
+    const double angle = std::atan2(std::sqrt(dot_product(axb, axb)), dot_product(a, b)) * 180. / CGAL_PI;
     s.smallest_angle_degrees = (std::min)(s.smallest_angle_degrees, angle);
   }
   return s;

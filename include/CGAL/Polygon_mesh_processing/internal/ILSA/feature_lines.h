@@ -9,10 +9,13 @@
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FEATURE_LINES_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_FEATURE_LINES_H
 
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/union_find.h>
+
+#include <CGAL/number_type_config.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -24,8 +27,7 @@ namespace ILSA {
 /// feature edge, from `ilsa_feature_angle` in degrees: π minus the paper's
 /// dihedral angle θ_f = 180° − the feature angle.
 inline double feature_normal_deviation(double feature_angle_degrees) {
-  const double pi = 3.14159265358979323846;
-  return pi - (180. - feature_angle_degrees) * pi / 180.;
+  return CGAL_PI - (180. - feature_angle_degrees) * CGAL_PI / 180.;
 }
 
 /// An edge is a feature edge when the cosine of the angle between its two
@@ -63,25 +65,20 @@ struct Line_sets {
 template <class Ends, class OnBorder>
 Line_sets line_sets(std::size_t number_of_vertices, const Ends& ends, const OnBorder& on_border,
                     const std::vector<unsigned char>& lines) {
-  std::vector<std::size_t> parent(number_of_vertices);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&parent](std::size_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  Index_union_find<> connected(number_of_vertices);
   std::vector<std::size_t> degree(number_of_vertices, 0);
   for (std::size_t e = 0; e < lines.size(); ++e)
     if (lines[e]) {
       const auto ab = ends(e);
-      parent[find(std::size_t(ab[0]))] = find(std::size_t(ab[1]));
+      connected.unite(std::size_t(ab[0]), std::size_t(ab[1]));
       ++degree[std::size_t(ab[0])], ++degree[std::size_t(ab[1])];
     }
   Line_sets sets{std::vector<std::size_t>(lines.size(), std::size_t(-1)),
                  std::vector<std::size_t>(number_of_vertices, 0), std::vector<unsigned char>(number_of_vertices, 0)};
   for (std::size_t e = 0; e < lines.size(); ++e)
-    if (lines[e]) ++sets.size[sets.set_of_edge[e] = find(std::size_t(ends(e)[0]))];
+    if (lines[e]) ++sets.size[sets.set_of_edge[e] = connected.find(std::size_t(ends(e)[0]))];
   for (std::size_t v = 0; v < number_of_vertices; ++v)
-    if (degree[v] == 1 && !on_border(v)) sets.loose[find(v)] = 1;
+    if (degree[v] == 1 && !on_border(v)) sets.loose[connected.find(v)] = 1;
   return sets;
 }
 

@@ -32,6 +32,7 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/union_find.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/vertex_classification.h>
 
 #include <CGAL/AABB_primitive.h>
@@ -109,17 +110,12 @@ public:
                          Face_point_map{&m_});
 
     // Patches: faces connected across non-sharp edges (union-find).
-    patch_.resize(m_.number_of_faces());
-    for (std::size_t f = 0; f < patch_.size(); ++f) patch_[f] = f;
-    auto find = [this](std::size_t f) {
-      while (patch_[f] != f) f = patch_[f] = patch_[patch_[f]];
-      return f;
-    };
+    Index_union_find<Index> patches(m_.number_of_faces());
     for (std::size_t e = 0; e < m_.edges.size(); ++e) {
       const auto& fs = incidences.edge_faces[e];
-      if (fs[0] != npos && fs[1] != npos && !c_.is_sharp(e)) patch_[find(fs[0])] = find(fs[1]);
+      if (fs[0] != npos && fs[1] != npos && !c_.is_sharp(e)) patches.unite(fs[0], fs[1]);
     }
-    for (std::size_t f = 0; f < patch_.size(); ++f) patch_[f] = find(f);
+    patch_ = std::move(patches).representatives();
 
     for (std::size_t e = 0; e < m_.edges.size(); ++e) {
       if (!c_.is_sharp(e)) continue;

@@ -14,11 +14,13 @@
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/least_squares.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/parallel_loops.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/union_find.h>
+
+#include <CGAL/number_type_config.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -193,12 +195,11 @@ inline void mark_sharp_edges(const Flat_mesh& m, const Set_up_incidences& incide
 /// or a smooth vertex (`fix_unattached_candidates`).
 inline void type_candidates(const Flat_mesh& m, const Classification_options& opt, const Classification_work& w,
                             Vertex_classification& c) {
-  const double pi = 3.14159265358979323846;
   // Kink (user manual, "Crease Kinks"): the crease's direction turns at `v`
   // by more than the kink angle, i.e. its two sharp edges meet at less than
   // 180° minus it. A vertex there is the tip of the crease: sliding would cut
   // it off. A zero-length sharp edge has no direction and counts as a kink.
-  const double kink_cosine = -std::cos(opt.kink_angle_degrees * pi / 180.);
+  const double kink_cosine = -std::cos(opt.kink_angle_degrees * CGAL_PI / 180.);
   auto is_kink = [&](const Vec3& v, const Vec3& a, const Vec3& b) {
     if (!(opt.kink_angle_degrees < 180.)) return false;
     const double la = (a - v).norm(), lb = (b - v).norm();
@@ -236,16 +237,11 @@ inline void type_candidates(const Flat_mesh& m, const Classification_options& op
 /// Crease polylines: sharp edges chained through ridge vertices (union-find).
 inline void chain_creases(const Flat_mesh& m, const Classification_work& w, Vertex_classification& c) {
   const std::size_t ne = m.edges.size();
-  std::vector<std::size_t> parent(ne);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&parent](std::size_t e) {
-    while (parent[e] != e) e = parent[e] = parent[parent[e]];
-    return e;
-  };
+  Index_union_find<> creases(ne);
   for (std::size_t v = 0; v < m.number_of_vertices(); ++v)
-    if (c.type[v] == ILSA_vertex_type::Ridge) parent[find(c.attached_edges[v][0])] = find(c.attached_edges[v][1]);
+    if (c.type[v] == ILSA_vertex_type::Ridge) creases.unite(c.attached_edges[v][0], c.attached_edges[v][1]);
   for (std::size_t e = 0; e < ne; ++e)
-    if (w.sharp_edge[e]) c.crease_of_edge[e] = find(e);
+    if (w.sharp_edge[e]) c.crease_of_edge[e] = creases.find(e);
 }
 
 inline namespace CGAL_ILSA_CORE_NAMESPACE { // core.h
