@@ -1242,7 +1242,8 @@ void test_documented_defaults() {
                                               {"crease_contrast", defaults::crease_contrast},
                                               {"minimum_open_crease_edges", defaults::minimum_open_crease_edges},
                                               {"minimum_remaining_gain", defaults::minimum_remaining_gain},
-                                              {"retry_distance", defaults::retry_distance}};
+                                              {"retry_distance", defaults::retry_distance},
+                                              {"move_halvings", defaults::move_halvings}};
   std::size_t checked = 0;
   auto expect = [&](const std::string& where, const std::string& name, const std::string& text) {
     const auto found = code.find(name);

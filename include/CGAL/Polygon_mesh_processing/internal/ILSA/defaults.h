@@ -46,7 +46,8 @@ inline constexpr double area_weight = 0.1;  // wa
 inline constexpr double crease_contrast = 5.;
 inline constexpr unsigned int minimum_open_crease_edges = 20;
 inline constexpr double minimum_remaining_gain = 2e-3;
-inline constexpr double retry_distance = 0.03; // of the mean edge length
+inline constexpr double retry_distance = 0.03;   // of the mean edge length
+inline constexpr unsigned int move_halvings = 3; // of a move the safety check rejects, before it is dropped
 
 } // namespace defaults
 } // namespace ILSA

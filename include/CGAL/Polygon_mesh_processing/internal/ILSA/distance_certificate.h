@@ -203,10 +203,16 @@ bool corners_near(const Polygon2& piece, const Frame& frame, std::size_t n, cons
   return true;
 }
 
-// Whether the triangle `abc` is too thin for a frame of its plane: then it is
-// bounded through its longest edge (triangle_bound()).
+/// A triangle is too thin for a frame of its plane when twice its area is at
+/// most this fraction of its longest edge squared. It protects the frames of
+/// height_bound() and triangle_bound(), whose normal comes from the cross
+/// product of two edges: such a triangle is bounded through its longest edge.
+constexpr double thin_ratio = 1e-9;
+
+// Whether a triangle of that double area and longest squared edge is too thin
+// for a frame of its plane.
 inline bool is_thin(double double_area, double longest_squared) {
-  return !(double_area > 1e-9 * longest_squared);
+  return !(double_area > thin_ratio * longest_squared);
 }
 
 /// The clearance of the nearness tests of height_bound(), in the normalised

@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/triangle_quality_ilsa.h>
 #include <CGAL/Polygon_mesh_processing/ilsa_types.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/core.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/ilsa_displacement.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/move_safety.h>
@@ -45,7 +46,7 @@ public:
       : m_(original), nb_(neighborhoods), p_(parameters), penalty_(parameters.penalty),
         projector_(original, classification, incidences, ConcurrencyTag()),
         safety_(original, classification, incidences, floor_of_check(original, parameters),
-                parameters.fidelity_tolerance, parameters.reject_worsening, 3),
+                parameters.fidelity_tolerance, parameters.reject_worsening, defaults::move_halvings),
         face_values_(original.number_of_faces()) {
     double mean_edge_length = 0;
     for (const auto& e : m_.edges) mean_edge_length += (m_.points[e[0]] - m_.points[e[1]]).norm();

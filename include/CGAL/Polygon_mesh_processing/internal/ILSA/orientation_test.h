@@ -26,7 +26,9 @@ namespace ILSA {
 class Orientation_test {
 public:
   /// Relative area below which a triangle counts as collapsed: twice its area
-  /// under this fraction of its longest edge squared.
+  /// under this fraction of its longest edge squared. It protects the
+  /// orientation test, which needs a normal to compare: a move may not make a
+  /// face this thin.
   static constexpr double collapse_tolerance = 1e-6;
 
   /// `original` must outlive the test: it keeps a reference. `incidences`

@@ -442,7 +442,10 @@ private:
   // diagonal is 1): far above the rounding of the distances (about 1e-16),
   // far below any distance the smoothing depends on.
   static constexpr double margin = 1e-10;
-  // A face is thin when twice its area is below this fraction of its longest edge squared.
+  // A face is thin (a sliver) when twice its area is below this fraction of
+  // its longest edge squared. It protects the clearances: the distance to a
+  // thin face is bounded through its edges (squared_distance_at_least()),
+  // where the closest-point formula loses its accuracy.
   static constexpr double thin_ratio = 1e-2;
 
   const Flat_mesh& m_;
