@@ -61,26 +61,34 @@ namespace Polygon_mesh_processing {
  *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_feature_angle}
- *     \cgalParamDescription{an edge is sharp when the normals of its two faces make an angle larger than this, in
- * degrees (CGAL's convention, as in `detect_sharp_edges()`)} \cgalParamType{`double`, in [0, 180)}
- * \cgalParamDefault{`20` (the paper's dihedral θ_f = 8π/9)} \cgalParamNEnd
+ *     \cgalParamDescription{an edge is sharp when the normals of its two faces make an angle larger than this,
+ *       in degrees (CGAL's convention, as in `detect_sharp_edges()`)}
+ *     \cgalParamType{`double`, in [0, 180)}
+ *     \cgalParamDefault{`20` (the paper's dihedral θ_f = 8π/9)}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{ilsa_paper_variant}
  *     \cgalParamDescription{if `true`, the paper's rules: every edge beyond the feature angle between two
- * candidates is sharp, a candidate without sharp edge is a corner, no kink rule}
- *     \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *       candidates is sharp, a candidate without sharp edge is a corner, no kink rule}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{vertex_is_constrained_map}
- *     \cgalParamDescription{a property map telling which vertices are fixed; they are reported as corners (boundary
- * vertices stay boundary)} \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool`
- * as value} \cgalParamDefault{no vertex is constrained} \cgalParamNEnd \cgalParamNBegin{edge_is_constrained_map}
- *     \cgalParamDescription{when given, these edges are the sharp edges, replacing the detection and its rules: with
- * `relax_constraints(true)`, a vertex with two constrained edges is a ridge vertex, with one or more than two a
- * corner, with none a smooth vertex; by default every end of a constrained edge is a corner}
+ *     \cgalParamDescription{a property map telling which vertices are fixed; they are reported as corners
+ *       (boundary vertices stay boundary)}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `bool` as value}
+ *     \cgalParamDefault{no vertex is constrained}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{edge_is_constrained_map}
+ *     \cgalParamDescription{when given, these edges are the sharp edges, replacing the detection and its rules:
+ *       with `relax_constraints(true)`, a vertex with two constrained edges is a ridge vertex, with one or more
+ *       than two a corner, with none a smooth vertex; by default every end of a constrained edge is a corner}
  *     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
  *     \cgalParamDefault{sharp edges are detected}
  *   \cgalParamNEnd
  *   \cgalParamNBegin{relax_constraints}
- *     \cgalParamDescription{see `smooth_surface_mesh_ilsa()`} \cgalParamType{`bool`} \cgalParamDefault{`false`}
+ *     \cgalParamDescription{see `smooth_surface_mesh_ilsa()`}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`}
  *   \cgalParamNEnd
  * \cgalNamedParamsEnd
  *

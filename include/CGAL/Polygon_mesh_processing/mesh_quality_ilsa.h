@@ -58,12 +58,32 @@ struct ILSA_quality_summary {
 };
 
 /// \ingroup PkgPMPILSARef
-/// Quality summary over the faces `face_range` of the triangle mesh `tm`.
-/// Named parameters, in any order:
-/// - `vertex_point_map` (default `get_const_property_map(CGAL::vertex_point, tm)`);
-/// - `ilsa_quality_threshold` (default `0.3`, in [0, 1]): the aspect ratio
-///   under which a face counts as poor in `share_below_threshold`.
+/// Quality summary over the faces `face_range` of the triangle mesh `tm`:
+/// aspect ratio `q` (triangle_quality_ilsa()), radius ratio, mean ratio and
+/// smallest angle.
 ///
+/// @tparam FaceRange a range of `boost::graph_traits<TriangleMesh>::%face_descriptor`
+/// @tparam TriangleMesh a model of `FaceGraph`
+/// @tparam NamedParameters a sequence of named parameters
+///
+/// @param face_range the faces to summarise
+/// @param tm the triangle mesh the faces belong to
+/// @param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `%Point_3` as value}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{ilsa_quality_threshold}
+///     \cgalParamDescription{the aspect ratio under which a face counts as poor in `share_below_threshold`}
+///     \cgalParamType{`double`, in [0, 1]}
+///     \cgalParamDefault{`0.3`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// @return the summary; with no face, every figure is 0
 /// @throws ILSA_error for a face of the range that is not a triangle or has a
 ///         non-finite coordinate, as `smooth_surface_mesh_ilsa()` does, and
 ///         for a threshold out of range.
@@ -234,19 +254,42 @@ inline void crease_deviation(const Segments& original_crease, const Segments& sm
 /// \ingroup PkgPMPILSARef
 /// Compares `smoothed` with `original`, which must have the same vertices and
 /// faces in the same order (as `smooth_surface_mesh_ilsa()` leaves them).
-/// Named parameters:
-/// - `ilsa_feature_angle` (default `20`), `ilsa_paper_variant` (default
-///   `false`) and `edge_is_constrained_map` (a map from the edges of
-///   `original` to `bool`), as given to the smoother: the crease deviation
-///   compares the feature lines of `original` that the smoother keeps (the
-///   feature edges of `classify_vertices_ilsa()`, or the constrained edges)
-///   with the same edges of `smoothed`;
-/// - `ilsa_compute_hausdorff_distance` (default `true`): `false` skips the
-///   Hausdorff distance (`hausdorff_distance` is then NaN), the costly part on
-///   large meshes (CGAL's bounded-error distance, certified to 1e-5 of the
-///   diagonal: seconds on 100 000 faces): the other figures take about one
-///   AABB tree query per vertex.
 ///
+/// @tparam TriangleMesh a model of `FaceGraph` whose points are those of a CGAL kernel
+/// @tparam NamedParameters a sequence of named parameters
+///
+/// @param original the mesh before smoothing
+/// @param smoothed the mesh after smoothing
+/// @param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{ilsa_feature_angle}
+///     \cgalParamDescription{as given to the smoother: the crease deviation compares the feature lines of
+///       `original` that the smoother keeps (the feature edges of `classify_vertices_ilsa()`) with the same edges
+///       of `smoothed`}
+///     \cgalParamType{`double`, in [0, 180)}
+///     \cgalParamDefault{`20`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{ilsa_paper_variant}
+///     \cgalParamDescription{as given to the smoother: the paper's rules for the feature lines}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{as given to the smoother: these edges of `original` are its feature lines}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
+///     \cgalParamDefault{feature lines are detected with `ilsa_feature_angle`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{ilsa_compute_hausdorff_distance}
+///     \cgalParamDescription{`false` skips the Hausdorff distance (`hausdorff_distance` is then NaN), the costly
+///       part on large meshes (CGAL's bounded-error distance, certified to 1e-5 of the diagonal: seconds on
+///       100 000 faces); the other figures take about one AABB tree query per vertex}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// @return the summary, distances relative to the bounding-box diagonal of `original`
 /// @throws ILSA_error if a mesh is not a triangle mesh or has a non-finite coordinate.
 template <class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 ILSA_fidelity_summary mesh_fidelity_ilsa(const TriangleMesh& original, const TriangleMesh& smoothed,

@@ -92,7 +92,9 @@ inline double aspect_ratio_of_shape(double double_area, const std::array<double,
 /// \ingroup PkgPMPILSARef
 /// Aspect ratio `q = 2√3·r_in / l_max` of a triangle (inradius over longest
 /// edge): 1 for an equilateral triangle, 0 for a degenerate one. This is the
-/// paper's quality measure and the package's primary one.
+/// paper's quality measure and the package's primary one. It is not CGAL's
+/// `face_aspect_ratio()` (longest edge over smallest altitude: about 1.155 for
+/// an equilateral triangle, larger is worse).
 /// `P` is any point type with `x()`, `y()`, `z()`.
 template <class P> double triangle_quality_ilsa(const P& p0, const P& p1, const P& p2) {
   const auto s = internal::ILSA::triangle_shape(p0, p1, p2);

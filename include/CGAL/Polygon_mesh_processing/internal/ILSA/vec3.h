@@ -2,13 +2,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The 3-vector of the flat mesh: coordinates, displacements, normals. A plain
-// struct of three doubles with the few operations the core uses, rather than
-// Eigen's `Vector3d`, whose expression templates made a quarter of the code a
-// program calling the smoother hands the compiler's back end (user manual,
-// "Compiling the Core Once"). Each operation computes what Eigen 3.4 computes
-// for a `Vector3d`, in the same order, so the results are the same bits: the
-// coordinates one by one, and the sums of dot() and squaredNorm() from the
-// first coordinate to the last.
+// struct of three doubles with the few operations the core uses, so that a
+// program calling the smoother compiles no expression templates for them
+// (user manual, "Compiling the Core Once"). Each operation computes the
+// coordinates one by one, and dot() and squaredNorm() sum from the first
+// coordinate to the last: the rounding is fixed, whatever the compiler
+// vectorises.
 
 #ifndef CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_VEC3_H
 #define CGAL_POLYGON_MESH_PROCESSING_INTERNAL_ILSA_VEC3_H
