@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/aabb_tree.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/flat_mesh.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
@@ -330,6 +331,21 @@ template <class Mesh> Mesh read_mesh(const std::string& path) {
   ILSA_CHECK(ok && !is_empty(m));
   CGAL_USE(ok);
   return m;
+}
+
+// The package's flat copy of `tm` with its default index maps (`vertex_list`,
+// `edge_list`: the descriptors in flat order; `incidences`: what only the
+// set-up reads).
+template <class Mesh>
+CGAL::Polygon_mesh_processing::internal::ILSA::Flat_mesh
+flat_copy(const Mesh& tm, std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& vertex_list,
+          std::vector<typename boost::graph_traits<Mesh>::edge_descriptor>& edge_list,
+          CGAL::Polygon_mesh_processing::internal::ILSA::Set_up_incidences& incidences) {
+  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
+  const auto np = CGAL::parameters::default_values();
+  ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, np))> vertex_index{ilsa::vertex_index_map_of(tm, np), {}};
+  return ilsa::build_flat_mesh(tm, get(CGAL::vertex_point, tm), vertex_list, vertex_index,
+                               ilsa::face_index_map_of(tm, np), edge_list, incidences);
 }
 
 } // namespace ilsa_test

@@ -26,6 +26,7 @@
 
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/distance_certificate.h>
+#include <CGAL/Polygon_mesh_processing/internal/ILSA/fidelity_certificate.h>
 #include <CGAL/Polygon_mesh_processing/internal/ILSA/defaults.h>
 #include <CGAL/Polygon_mesh_processing/smooth_surface_mesh_ilsa.h>
 
@@ -351,7 +352,53 @@ void test_meshes() {
   ILSA_CHECK(larger && stats.certified_distance == std::numeric_limits<double>::infinity());
 }
 
+// The edges the certificate counts as cancelled (cancelled_edges(), which
+// height_bound() then leaves out of its nearness test): each must be cancelled
+// by the reverse edges of the other candidates, for every face of an open and
+// of a closed mesh, with the first ring and with the second. Counting an edge
+// that is not (at the rim of the candidates, or on the mesh's boundary) would
+// let the height route certify a triangle the candidates do not cover.
+void test_cancelled_edges() {
+  for (const std::string name : {"hemisphere.off", "mech-holes-shark.off", "fandisk.off"}) {
+    const Surface_mesh tm = read_mesh<Surface_mesh>(data_file(name));
+    std::vector<Surface_mesh::Vertex_index> vertex_list;
+    std::vector<Surface_mesh::Edge_index> edge_list;
+    ilsa::Set_up_incidences incidences;
+    const ilsa::Flat_mesh m = flat_copy(tm, vertex_list, edge_list, incidences);
+    const std::vector<unsigned char> balanced = ilsa::balanced_edges(m);
+    std::size_t cancelled_count = 0, kept_count = 0;
+    for (std::size_t f = 0; f < m.number_of_faces(); ++f)
+      for (const bool second_ring : {false, true}) {
+        ilsa::Face_candidates candidates(m, f);
+        if (second_ring) candidates.add_second_ring(m);
+        std::array<unsigned char, ilsa::Face_candidates::capacity> cancelled{};
+        ilsa::cancelled_edges(m, balanced, candidates, cancelled);
+        for (std::size_t k = 0; k < candidates.n; ++k)
+          for (std::size_t i = 0; i < 3; ++i) {
+            if (!(cancelled[k] >> i & 1)) {
+              ++kept_count;
+              continue;
+            }
+            const auto& s = m.faces[candidates.face[k]];
+            const ilsa::Index u = s[i], v = s[(i + 1) % 3];
+            int net = 0; // uses u -> v less uses v -> u among the candidates
+            for (std::size_t j = 0; j < candidates.n; ++j)
+              for (std::size_t l = 0; l < 3; ++l) {
+                const auto& r = m.faces[candidates.face[j]];
+                net += int(r[l] == u && r[(l + 1) % 3] == v) - int(r[l] == v && r[(l + 1) % 3] == u);
+              }
+            assert(net == 0);
+            ++cancelled_count;
+          }
+      }
+    std::cout << "cancelled edges, " << name << ": " << cancelled_count << " cancelled, " << kept_count
+              << " kept, each cancelled one by the other candidates" << std::endl;
+    assert(cancelled_count > 0 && kept_count > 0);
+  }
+}
+
 int main() {
+  test_cancelled_edges();
   test_bounds_against_samples();
   test_height_bound_against_samples();
   test_degenerate_candidates();

@@ -42,21 +42,6 @@ void require(const Invariant_report& r, const char* what) {
   assert(r.mean_q_after > r.mean_q_before);
 }
 
-// The package's flat copy of `tm` with its default index maps (`vertex_list`,
-// `edge_list`: the descriptors in flat order; `incidences`: what only the
-// set-up reads).
-template <class Mesh>
-CGAL::Polygon_mesh_processing::internal::ILSA::Flat_mesh
-flat_copy(const Mesh& tm, std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& vertex_list,
-          std::vector<typename boost::graph_traits<Mesh>::edge_descriptor>& edge_list,
-          CGAL::Polygon_mesh_processing::internal::ILSA::Set_up_incidences& incidences) {
-  namespace ilsa = CGAL::Polygon_mesh_processing::internal::ILSA;
-  const auto np = CGAL::parameters::default_values();
-  ilsa::Flat_indices<decltype(ilsa::vertex_index_map_of(tm, np))> vertex_index{ilsa::vertex_index_map_of(tm, np), {}};
-  return ilsa::build_flat_mesh(tm, get(CGAL::vertex_point, tm), vertex_list, vertex_index,
-                               ilsa::face_index_map_of(tm, np), edge_list, incidences);
-}
-
 // The flat copy of the fandisk perturbed on its surface by `amount` (see perturb_on_surface()).
 CGAL::Polygon_mesh_processing::internal::ILSA::Flat_mesh
 perturbed_flat_fandisk(double amount, unsigned seed,

@@ -131,6 +131,47 @@ private:
   bool second_ring_closed_ = false; // the second ring is listed, with every face around the neighbours visited
 };
 
+/// Per face of `m`, a bit per edge (from corner i to corner i + 1): whether
+/// the edge is balanced, used by the faces of the mesh as often in one
+/// direction as in the other (an interior edge between two faces of the same
+/// orientation is). A face with a repeated vertex would be listed twice among
+/// the candidates of a face: then no edge is taken as balanced.
+inline std::vector<unsigned char> balanced_edges(const Flat_mesh& m) {
+  std::vector<unsigned char> balanced(m.number_of_faces(), 0);
+  for (const auto& t : m.faces)
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return balanced;
+  for (std::size_t f = 0; f < m.number_of_faces(); ++f)
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Index u = m.faces[f][i], v = m.faces[f][(i + 1) % 3];
+      int net = 0;
+      for (const Index* g = m.vertex_faces.first(u); g != m.vertex_faces.last(u); ++g)
+        for (std::size_t j = 0; j < 3; ++j) {
+          const Index x = m.faces[*g][j], y = m.faces[*g][(j + 1) % 3];
+          net += int(x == u && y == v) - int(x == v && y == u);
+        }
+      if (net == 0) balanced[f] |= static_cast<unsigned char>(1 << i);
+    }
+  return balanced;
+}
+
+/// Per candidate, a bit per edge (from corner i to corner i + 1): whether the
+/// edge is cancelled by the reverse edges of the other candidates
+/// (height_bound()'s `cancelled`). It is when it is balanced (`balanced`, from
+/// balanced_edges()) and has a vertex whose faces are all candidates (a vertex
+/// of the face, or one of the second ring's neighbours), so that every face
+/// that has the edge is a candidate.
+inline void cancelled_edges(const Flat_mesh& m, const std::vector<unsigned char>& balanced,
+                            const Face_candidates& candidates,
+                            std::array<unsigned char, Face_candidates::capacity>& cancelled) {
+  for (std::size_t k = 0; k < candidates.n; ++k) {
+    const auto& s = m.faces[candidates.face[k]];
+    unsigned corners = 0; // those whose faces are all candidates
+    for (std::size_t i = 0; i < 3; ++i) corners |= unsigned(candidates.lists_every_face_around(s[i])) << i;
+    const unsigned near = corners | corners >> 1 | (corners & 1) << 2; // edge i: corner i or i + 1
+    cancelled[k] = static_cast<unsigned char>(near & balanced[candidates.face[k]]);
+  }
+}
+
 class Fidelity_certificate {
 public:
   /// `tolerance` in the normalised units of `mesh` (infinity: no bound).
@@ -141,25 +182,7 @@ public:
     output_.assign(m_.number_of_faces());
     input_.assign(m_.number_of_faces());
     vertex_flags_.assign(m_.number_of_vertices(), 0);
-    // An edge is balanced when the faces of the mesh use it as often in one
-    // direction as in the other (an interior edge between two faces of the
-    // same orientation is); per face, a bit per edge (from corner i to i + 1).
-    // (A face with a repeated vertex would be listed twice among the
-    // candidates of a face: then no edge is taken as balanced.)
-    balanced_.assign(m_.number_of_faces(), 0);
-    for (const auto& t : m_.faces)
-      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return;
-    for (std::size_t f = 0; f < m_.number_of_faces(); ++f)
-      for (std::size_t i = 0; i < 3; ++i) {
-        const Index u = m_.faces[f][i], v = m_.faces[f][(i + 1) % 3];
-        int net = 0;
-        for (const Index* g = m_.vertex_faces.first(u); g != m_.vertex_faces.last(u); ++g)
-          for (std::size_t j = 0; j < 3; ++j) {
-            const Index x = m_.faces[*g][j], y = m_.faces[*g][(j + 1) % 3];
-            net += int(x == u && y == v) - int(x == v && y == u);
-          }
-        if (net == 0) balanced_[f] |= static_cast<unsigned char>(1 << i);
-      }
+    balanced_ = balanced_edges(m_);
   }
 
   bool enabled() const { return std::isfinite(tolerance_); }
@@ -357,22 +380,6 @@ private:
     }
   };
 
-  // Per candidate, a bit per edge (from corner i to corner i + 1): whether the
-  // edge is cancelled by the reverse edges of the others. It is when it has a
-  // vertex whose faces are all candidates (a vertex of the face, or of the
-  // second ring's neighbours), so that every face that has it is a candidate,
-  // and the mesh's faces balance it.
-  void cancelled_edges(const Face_candidates& candidates,
-                       std::array<unsigned char, Face_candidates::capacity>& cancelled) const {
-    for (std::size_t k = 0; k < candidates.n; ++k) {
-      const auto& s = m_.faces[candidates.face[k]];
-      unsigned corners = 0; // those whose faces are all candidates
-      for (std::size_t i = 0; i < 3; ++i) corners |= unsigned(candidates.lists_every_face_around(s[i])) << i;
-      const unsigned near = corners | corners >> 1 | (corners & 1) << 2; // edge i: corner i or i + 1
-      cancelled[k] = static_cast<unsigned char>(near & balanced_[candidates.face[k]]);
-    }
-  }
-
   template <class F> void for_each_dependency(const Face_candidates& candidates, const F& f) const {
     for (std::size_t k = 0; k < candidates.n; ++k)
       for (Index w : m_.faces[candidates.face[k]]) f(w);
@@ -438,7 +445,7 @@ private:
                       const std::vector<Vec3>& at, Vec3* far, bool* has_far) const {
     const auto& t = m_.faces[f];
     std::array<unsigned char, Face_candidates::capacity> cancelled;
-    cancelled_edges(candidates, cancelled);
+    cancelled_edges(m_, balanced_, candidates, cancelled);
     return height_bound(
         corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, corners_of(candidates, at),
         [&](std::size_t k, std::size_t i) { return (cancelled[k] >> i & 1) != 0; }, limit_, far, has_far);
