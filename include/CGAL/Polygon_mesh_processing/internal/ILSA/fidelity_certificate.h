@@ -90,9 +90,6 @@ struct Face_candidates {
       }
   }
 
-  /// Lists the first `first` faces only (the first ring, before add_second_ring()).
-  void drop_second_ring(std::size_t first) { n = first, second_ring_closed_ = false; }
-
   /// Whether every face around vertex `u` is listed: `u` is a vertex of `f`
   /// (the first ring being complete) or a neighbour of one whose faces the
   /// second ring lists (none left out for the capacity).
@@ -406,29 +403,31 @@ private:
     Face_candidates candidates(m_, f);
     const std::size_t first = candidates.n;
     Vec3 far;
-    bool has_far = false, second_heights = false;
+    bool has_far = false;
     wide = false;
     double b = height_route(corners, f, candidates, at, &far, &has_far);
     if (b <= limit_) return b;
+    candidates.add_second_ring(m_);
     if (!has_far) {
-      candidates.add_second_ring(m_);
-      wide = second_heights = true;
+      // The second ring's heights, then the first ring's pieces.
+      wide = true;
       b = height_route(corners, f, candidates, at, &far, &has_far);
       if (b <= limit_ || has_far) return b;
-      candidates.drop_second_ring(first);
       wide = false;
-      b = piece_route(corners, f, candidates, at, &far, &has_far);
+      b = piece_route(corners, f, candidates, first, at, &far, &has_far);
       if (b <= limit_) return b;
-    }
-    candidates.add_second_ring(m_);
-    wide = true;
-    if (has_far && !near_any(far, candidates, first, at)) return b;
-    if (!second_heights) {
+      wide = true;
+      if (has_far && !near_any(far, candidates, first, at)) return b;
+    } else {
+      // The first ring's heights found a point too far from it: the second
+      // ring's are tried only if one of its faces comes near that point.
+      wide = true;
+      if (!near_any(far, candidates, first, at)) return b;
       has_far = false;
       b = height_route(corners, f, candidates, at, &far, &has_far);
       if (b <= limit_ || has_far) return b;
     }
-    return piece_route(corners, f, candidates, at);
+    return piece_route(corners, f, candidates, candidates.n, at);
   }
   // Whether `x` is within the limit of one of the candidates from `first` on, at `at`.
   bool near_any(const Vec3& x, const Face_candidates& candidates, std::size_t first,
@@ -450,11 +449,12 @@ private:
         corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, corners_of(candidates, at),
         [&](std::size_t k, std::size_t i) { return (cancelled[k] >> i & 1) != 0; }, limit_, far, has_far);
   }
-  double piece_route(const std::vector<Vec3>& corners, std::size_t f, const Face_candidates& candidates,
+  // The piece route against the first `n` candidates.
+  double piece_route(const std::vector<Vec3>& corners, std::size_t f, const Face_candidates& candidates, std::size_t n,
                      const std::vector<Vec3>& at, Vec3* far = nullptr, bool* has_far = nullptr) const {
     const auto& t = m_.faces[f];
-    return triangle_bound(corners[t[0]], corners[t[1]], corners[t[2]], candidates.n, corners_of(candidates, at), limit_,
-                          far, has_far);
+    return triangle_bound(corners[t[0]], corners[t[1]], corners[t[2]], n, corners_of(candidates, at), limit_, far,
+                          has_far);
   }
   const Flat_mesh& m_;
   double tolerance_, limit_;
